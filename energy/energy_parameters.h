@@ -1,0 +1,26 @@
+// lpd: the scalar weights of the energy of Eq. (5), with the paper's defaults (Table 2).
+#ifndef LPD_ENERGY_ENERGY_PARAMETERS_H_
+#define LPD_ENERGY_ENERGY_PARAMETERS_H_
+
+#include <string>
+
+namespace lpd::energy {
+
+struct EnergyParameters {
+  // lambda: weight of the piecewise-smoothness term (paper: 1, 1..2 for heavy noise).
+  double lambda = 1.0;
+  // eta: weight of the stitching term || h_i - t_i ||^2 (paper: 5000).
+  double eta = 5000.0;
+  // mu_l: selectivity of the fitting line processes l_ij, a squared distance in the
+  // normalized frame (paper: 5e-9).
+  double mu_l = 5e-9;
+  // mu_m: selectivity of the smoothness line processes m_ij (paper: 0.13; 1 - cos 30deg).
+  double mu_m = 0.13;
+
+  // True when every weight is finite and > 0; otherwise `error` names the field.
+  bool IsValid(std::string* error) const;
+};
+
+}  // namespace lpd::energy
+
+#endif  // LPD_ENERGY_ENERGY_PARAMETERS_H_

@@ -1,0 +1,43 @@
+// lpd: the robust local-fitting term of Eq. (5) and its outlier line processes L.
+//
+//   E_fit = 1/2 sum_i sum_{j in N(i) u {i}} alpha_i [ (h_i^T q_j)^2 l_ij + Psi_mu_l(l_ij) ]
+// UpdateLineProcesses sets every l_ij to its closed-form minimizer, Eq. (6).
+#ifndef LPD_ENERGY_FITTING_TERM_H_
+#define LPD_ENERGY_FITTING_TERM_H_
+
+#include "energy/geman_mcclure.h"
+#include "energy/problem.h"
+#include "energy/variables.h"
+
+namespace lpd::energy {
+
+class FittingTerm {
+ public:
+  FittingTerm(const Problem& problem, double mu_l, int num_threads = 1)
+      : problem_(problem), penalty_(mu_l), num_threads_(num_threads) {}
+
+  // E_fit at `v` (uses v.h and v.l).
+  double Evaluate(const Variables& v) const;
+
+  // l_ij = (mu_l / (mu_l + (h_i^T q_j)^2))^2 for all i, j (Eq. 6).
+  void UpdateLineProcesses(Variables* v) const;
+
+  // The point index of column `a` of row i of L: i for a = 0, else the (a-1)-th neighbour.
+  int ColumnPoint(int i, int a) const {
+    return a == 0 ? i : problem_.graph.NeighborsOf(i)[a - 1];
+  }
+
+  // h^T q_j, the algebraic distance of p_j to the plane h.
+  double Residual(const Eigen::Vector4d& h, int j) const {
+    return h.head<3>().dot(problem_.points[j]) + h[3];
+  }
+
+ private:
+  const Problem& problem_;
+  GemanMcClure penalty_;
+  int num_threads_;
+};
+
+}  // namespace lpd::energy
+
+#endif  // LPD_ENERGY_FITTING_TERM_H_

@@ -1,0 +1,99 @@
+#include "energy/neighbor_graph.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include <nanoflann.hpp>
+
+namespace lpd::energy {
+namespace {
+
+// nanoflann dataset adaptor over a PointList.
+struct PointListAdaptor {
+  const PointList& points;
+  size_t kdtree_get_point_count() const { return points.size(); }
+  double kdtree_get_pt(size_t index, size_t dim) const { return points[index][dim]; }
+  template <class BoundingBox>
+  bool kdtree_get_bbox(BoundingBox&) const { return false; }
+};
+
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
+    nanoflann::L2_Simple_Adaptor<double, PointListAdaptor>, PointListAdaptor, 3, int>;
+
+constexpr int kKdTreeLeafSize = 16;
+
+}  // namespace
+
+NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads) {
+  if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
+  const int n = static_cast<int>(points.size());
+  if (n < k + 1) {
+    throw std::invalid_argument("need at least k+1 = " + std::to_string(k + 1) +
+                                " points for k = " + std::to_string(k) + ", got " +
+                                std::to_string(n));
+  }
+  PointListAdaptor adaptor{points};
+  KdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(kKdTreeLeafSize));
+  tree.buildIndex();
+
+  NeighborGraph graph;
+  graph.k = k;
+  graph.neighbors.resize(static_cast<size_t>(n) * k);
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<int> indices(k + 1);
+    std::vector<double> squared_distances(k + 1);
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      nanoflann::KNNResultSet<double, int> result(k + 1);
+      result.init(indices.data(), squared_distances.data());
+      tree.findNeighbors(result, points[i].data(), nanoflann::SearchParams());
+      // Drop i itself; with duplicate points it need not come first, and it may be missing
+      // when more than k duplicates of p_i exist, in which case the farthest one is dropped.
+      int* out = graph.neighbors.data() + static_cast<size_t>(i) * k;
+      int count = 0;
+      for (int a = 0; a <= k && count < k; ++a) {
+        if (indices[a] != i) out[count++] = indices[a];
+      }
+    }
+  }
+  BuildPairs(&graph);
+  return graph;
+}
+
+void BuildPairs(NeighborGraph* graph) {
+  const int n = graph->num_points();
+  const int k = graph->k;
+  std::vector<uint64_t> keys;
+  keys.reserve(static_cast<size_t>(n) * k);
+  for (int i = 0; i < n; ++i) {
+    const int* nbrs = graph->NeighborsOf(i);
+    for (int a = 0; a < k; ++a) {
+      const uint64_t lo = std::min(i, nbrs[a]);
+      const uint64_t hi = std::max(i, nbrs[a]);
+      keys.push_back((lo << 32) | hi);
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+
+  graph->pairs.resize(keys.size());
+  graph->incident_offsets.assign(n + 1, 0);
+  for (size_t p = 0; p < keys.size(); ++p) {
+    const int i = static_cast<int>(keys[p] >> 32);
+    const int j = static_cast<int>(keys[p] & 0xffffffffu);
+    graph->pairs[p] = {i, j};
+    ++graph->incident_offsets[i + 1];
+    ++graph->incident_offsets[j + 1];
+  }
+  for (int i = 0; i < n; ++i) graph->incident_offsets[i + 1] += graph->incident_offsets[i];
+  graph->incident_pairs.resize(graph->incident_offsets[n]);
+  std::vector<int> fill(graph->incident_offsets.begin(), graph->incident_offsets.end() - 1);
+  for (size_t p = 0; p < graph->pairs.size(); ++p) {
+    graph->incident_pairs[fill[graph->pairs[p][0]]++] = static_cast<int>(p);
+    graph->incident_pairs[fill[graph->pairs[p][1]]++] = static_cast<int>(p);
+  }
+}
+
+}  // namespace lpd::energy

@@ -1,0 +1,42 @@
+// lpd: the k-nearest-neighbour sets N(i) and the symmetric pair set M of Sec. 3.1.
+//
+// N(i) holds the k nearest samples of point i, excluding i itself (Euclidean distance, ties
+// broken by the k-d tree). M holds every unordered pair {i, j} with i in N(j) or j in N(i)
+// exactly once, stored as (i, j) with i < j; the smoothness term of Eq. (5) uses that order:
+// || t_i - s_ij t_j ||^2. Everything is kept in flat arrays built once.
+#ifndef LPD_ENERGY_NEIGHBOR_GRAPH_H_
+#define LPD_ENERGY_NEIGHBOR_GRAPH_H_
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "energy/normalization.h"
+
+namespace lpd::energy {
+
+struct NeighborGraph {
+  int k = 0;
+  // N(i) = neighbors[i * k, (i + 1) * k), sorted by increasing distance.
+  std::vector<int> neighbors;
+  // M: pairs[p] = {i, j}, i < j, sorted lexicographically.
+  std::vector<std::array<int, 2>> pairs;
+  // Pairs incident to point i: incident_pairs[incident_offsets[i], incident_offsets[i + 1]).
+  std::vector<int> incident_offsets;
+  std::vector<int> incident_pairs;
+
+  int num_points() const { return k > 0 ? static_cast<int>(neighbors.size()) / k : 0; }
+  int num_pairs() const { return static_cast<int>(pairs.size()); }
+  const int* NeighborsOf(int i) const { return neighbors.data() + static_cast<size_t>(i) * k; }
+};
+
+// Builds N and M for `points` with a k-d tree (nanoflann), using `num_threads` threads.
+// Requires points.size() >= k + 1 and k >= 1; throws std::invalid_argument otherwise.
+NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads);
+
+// Builds M and the incidence lists from already filled `graph.k` and `graph.neighbors`.
+void BuildPairs(NeighborGraph* graph);
+
+}  // namespace lpd::energy
+
+#endif  // LPD_ENERGY_NEIGHBOR_GRAPH_H_

@@ -1,0 +1,77 @@
+#include "energy/problem.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace lpd::energy {
+
+bool ProblemOptions::IsValid(std::string* error) const {
+  if (k < 1) {
+    *error = "k must be >= 1, got " + std::to_string(k);
+    return false;
+  }
+  if (!(min_squared_distance_ratio > 0.0)) {
+    *error = "min_squared_distance_ratio must be > 0, got " +
+             std::to_string(min_squared_distance_ratio);
+    return false;
+  }
+  return true;
+}
+
+void ComputeWeights(double min_squared_distance_ratio, Problem* problem) {
+  const int n = problem->num_points();
+  const int k = problem->k();
+  const PointList& p = problem->points;
+  problem->alpha.assign(n, 0.0);
+  double alpha_sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const int* nbrs = problem->graph.NeighborsOf(i);
+    double sum = 0.0;
+    for (int a = 0; a < k; ++a) sum += (p[i] - p[nbrs[a]]).squaredNorm();
+    problem->alpha[i] = sum / k;
+    alpha_sum += problem->alpha[i];
+  }
+  const double mean_alpha = alpha_sum / n;
+  if (!(mean_alpha > 0.0)) {
+    throw std::invalid_argument(
+        "every point coincides with its k nearest neighbours: remove duplicate points or "
+        "lower k");
+  }
+  const double floor = min_squared_distance_ratio * mean_alpha;
+  for (double& a : problem->alpha) a = std::max(a, floor);
+
+  const auto& pairs = problem->graph.pairs;
+  problem->beta.resize(pairs.size());
+  for (size_t q = 0; q < pairs.size(); ++q) {
+    const int i = pairs[q][0];
+    const int j = pairs[q][1];
+    const double squared_distance = std::max((p[i] - p[j]).squaredNorm(), floor);
+    problem->beta[q] = (problem->alpha[i] / k + problem->alpha[j] / k) / squared_distance;
+  }
+}
+
+Problem BuildProblem(const PointList& input_points, const ProblemOptions& options,
+                     int num_threads) {
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  for (size_t i = 0; i < input_points.size(); ++i) {
+    if (!input_points[i].allFinite()) {
+      throw std::invalid_argument("point " + std::to_string(i) +
+                                  " has a non-finite coordinate (NaN or infinity)");
+    }
+  }
+  if (static_cast<int>(input_points.size()) < options.k + 1) {
+    throw std::invalid_argument("need at least k+1 = " + std::to_string(options.k + 1) +
+                                " points for k = " + std::to_string(options.k) + ", got " +
+                                std::to_string(input_points.size()));
+  }
+  Problem problem;
+  problem.frame = ComputeNormalizingFrame(input_points);
+  problem.points.reserve(input_points.size());
+  for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
+  problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads);
+  ComputeWeights(options.min_squared_distance_ratio, &problem);
+  return problem;
+}
+
+}  // namespace lpd::energy

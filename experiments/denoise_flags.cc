@@ -1,0 +1,75 @@
+#include "experiments/denoise_flags.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+// ---- neighbourhoods and energy (Eq. 5, Table 2) ----
+DEFINE_int32(k, 20, "number of nearest neighbours |N(i)| (paper: 20; 50-150 for heavy noise)");
+DEFINE_double(lambda, 1.0, "weight of the piecewise-smoothness term (paper: 1-2)");
+DEFINE_double(eta, 5000.0, "weight of the stitching term |h_i - t_i|^2 (paper: 5000)");
+DEFINE_double(mu_l, 5e-9,
+              "selectivity of the fitting line processes, a squared distance in the frame "
+              "normalized to bounding-box diagonal 1 (paper: 5e-9)");
+DEFINE_double(mu_m, 0.13, "selectivity of the smoothness line processes (paper: 0.13)");
+DEFINE_double(mu_m_deg, 0.0,
+              "if > 0, sets mu_m = 1 - cos(angle) from an angle in degrees (30 gives 0.134); "
+              "cannot be combined with --mu_m");
+// ---- schedule (Alg. 1) ----
+DEFINE_int32(max_iters, 10, "maximum outer iterations of Alg. 1");
+DEFINE_int32(inner_iters, 2, "(T, M, S) passes per outer iteration (paper: 2)");
+DEFINE_double(energy_tolerance, 0.01,
+              "stop when the energy changes by less than this fraction over three "
+              "iterations (paper: 0.01); 0 runs all iterations");
+DEFINE_double(linear_tolerance, 1e-10, "relative residual at which the T solve (Eq. 9) stops");
+DEFINE_int32(max_cg_iterations, 2000, "conjugate-gradient iterations per T solve, at most");
+DEFINE_int32(threads, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
+             "worker threads (default: all cores)");
+// ---- final denoising (Sec. 3.4) ----
+DEFINE_double(outlier_threshold, 0.5, "l_ij below this counts as an outlier vote");
+DEFINE_double(outlier_fraction, 0.9, "share of outlier votes in N(i) that makes i an outlier");
+DEFINE_double(feature_threshold, 0.5, "m_ij below this counts as a feature vote");
+DEFINE_double(feature_fraction, 0.7, "share of feature votes above which i is a feature point");
+DEFINE_bool(remove_outliers, true, "drop points flagged as outliers from the output");
+DEFINE_double(max_removed_fraction, 0.5,
+              "keep all points (and say so) if more than this share is flagged as outliers");
+
+namespace lpd::experiments {
+
+solvers::DenoiseOptions DenoiseOptionsFromFlags() {
+  solvers::DenoiseOptions options;
+  options.problem.k = FLAGS_k;
+  auto& minimizer = options.minimizer;
+  minimizer.energy.lambda = FLAGS_lambda;
+  minimizer.energy.eta = FLAGS_eta;
+  minimizer.energy.mu_l = FLAGS_mu_l;
+  minimizer.energy.mu_m = FLAGS_mu_m;
+  if (!gflags::GetCommandLineFlagInfoOrDie("mu_m_deg").is_default) {
+    if (!gflags::GetCommandLineFlagInfoOrDie("mu_m").is_default) {
+      throw std::invalid_argument("give either --mu_m or --mu_m_deg, not both");
+    }
+    if (!(FLAGS_mu_m_deg > 0.0 && FLAGS_mu_m_deg < 180.0)) {
+      throw std::invalid_argument("mu_m_deg must be in (0, 180), got " +
+                                  std::to_string(FLAGS_mu_m_deg));
+    }
+    minimizer.energy.mu_m = 1.0 - std::cos(FLAGS_mu_m_deg * M_PI / 180.0);
+  }
+  minimizer.max_iterations = FLAGS_max_iters;
+  minimizer.inner_iterations = FLAGS_inner_iters;
+  minimizer.energy_tolerance = FLAGS_energy_tolerance;
+  minimizer.linear_solver.relative_tolerance = FLAGS_linear_tolerance;
+  minimizer.linear_solver.max_iterations = FLAGS_max_cg_iterations;
+  minimizer.num_threads = FLAGS_threads;
+  auto& final_step = options.final_step;
+  final_step.outlier_line_threshold = FLAGS_outlier_threshold;
+  final_step.outlier_fraction = FLAGS_outlier_fraction;
+  final_step.feature_line_threshold = FLAGS_feature_threshold;
+  final_step.feature_fraction = FLAGS_feature_fraction;
+  final_step.remove_outliers = FLAGS_remove_outliers;
+  final_step.max_removed_fraction = FLAGS_max_removed_fraction;
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  return options;
+}
+
+}  // namespace lpd::experiments

@@ -1,0 +1,118 @@
+// lpd: command-line entry point. `lpd COMMAND [ARGS] [--flags]`; `lpd COMMAND --help`.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gflags/gflags.h>
+
+#include "experiments/commands.h"
+
+namespace {
+
+struct Command {
+  int (*run)(const std::vector<std::string>&);
+  const char* usage;
+  const char* summary;
+  std::vector<std::string> flag_files;  // source files whose flags the command reads
+};
+
+const std::map<std::string, Command>& Commands() {
+  static const std::map<std::string, Command> commands = {
+      {"denoise",
+       {lpd::experiments::RunDenoiseCommand, "lpd denoise [INPUT] -o OUTPUT [flags]",
+        "denoise INPUT (.xyz/.ply/.off/.obj) into OUTPUT (.ply/.xyz); with no INPUT, denoise "
+        "a built-in noisy box and report its distance to the clean box",
+        {"denoise_flags.cc", "denoise_command.cc"}}},
+      {"metrics",
+       {lpd::experiments::RunMetricsCommand, "lpd metrics POINTS --mesh=MESH",
+        "exact distances from POINTS to a ground-truth triangle mesh",
+        {"metrics_command.cc", "denoise_flags.cc:threads"}}},
+      {"bench",
+       {lpd::experiments::RunBenchCommand, "lpd bench INPUT [flags]",
+        "time every outer iteration of Alg. 1 on INPUT and report peak memory",
+        {"denoise_flags.cc"}}},
+  };
+  return commands;
+}
+
+void PrintUsage() {
+  std::printf("lpd: robust point-set denoising through line processes (Wei et al. 2023)\n\n");
+  for (const auto& [name, command] : Commands()) {
+    std::printf("  %-40s %s\n", command.usage, command.summary);
+  }
+  std::printf("\n`lpd COMMAND --help` lists the command's flags with their defaults.\n");
+}
+
+bool FlagBelongsTo(const gflags::CommandLineFlagInfo& flag, const Command& command) {
+  for (const std::string& spec : command.flag_files) {
+    const size_t colon = spec.find(':');
+    const std::string file = spec.substr(0, colon);
+    if (flag.filename.size() < file.size() ||
+        flag.filename.compare(flag.filename.size() - file.size(), file.size(), file) != 0) {
+      continue;
+    }
+    if (colon == std::string::npos || spec.substr(colon + 1) == flag.name) return true;
+  }
+  return false;
+}
+
+void PrintCommandHelp(const Command& command) {
+  std::printf("usage: %s\n%s\n\nflags (default in brackets):\n", command.usage, command.summary);
+  std::vector<gflags::CommandLineFlagInfo> flags;
+  gflags::GetAllFlags(&flags);
+  for (const auto& flag : flags) {
+    if (!FlagBelongsTo(flag, command)) continue;
+    std::printf("  --%-20s %s [%s]\n", flag.name.c_str(), flag.description.c_str(),
+                flag.default_value.c_str());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage("lpd COMMAND [ARGS] [--flags]; run `lpd` for the list of commands");
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
+      !std::strcmp(argv[1], "help")) {
+    PrintUsage();
+    return argc < 2 ? 2 : 0;
+  }
+  const auto found = Commands().find(argv[1]);
+  if (found == Commands().end()) {
+    std::fprintf(stderr, "lpd: unknown command '%s' (try: lpd --help)\n", argv[1]);
+    return 2;
+  }
+  const Command& command = found->second;
+  // Rewrite "-o FILE" as "--output=FILE" and catch --help before gflags sees it.
+  std::vector<std::string> rewritten = {std::string("lpd ") + argv[1]};
+  for (int a = 2; a < argc; ++a) {
+    const std::string arg = argv[a];
+    if (arg == "--help" || arg == "-h" || arg == "-help") {
+      PrintCommandHelp(command);
+      return 0;
+    }
+    if (arg == "-o") {
+      if (a + 1 >= argc) {
+        std::fprintf(stderr, "lpd: -o needs a file name\n");
+        return 2;
+      }
+      rewritten.push_back("--output=" + std::string(argv[++a]));
+    } else {
+      rewritten.push_back(arg);
+    }
+  }
+  std::vector<char*> args;
+  for (std::string& arg : rewritten) args.push_back(arg.data());
+  int count = static_cast<int>(args.size());
+  char** pointer = args.data();
+  gflags::ParseCommandLineNonHelpFlags(&count, &pointer, /*remove_flags=*/true);
+  std::vector<std::string> positional(pointer + 1, pointer + count);
+  try {
+    return command.run(positional);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "lpd %s: error: %s\n", argv[1], error.what());
+    return 1;
+  }
+}

@@ -1,0 +1,400 @@
+#include "experiments/point_cloud_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "experiments/atomic_output_file.h"
+
+namespace lpd::experiments {
+namespace {
+
+using energy::Point3;
+using energy::PointList;
+
+[[noreturn]] void Fail(const std::string& path, long line, const std::string& reason) {
+  if (line > 0) throw std::runtime_error(path + ":" + std::to_string(line) + ": " + reason);
+  throw std::runtime_error(path + ": " + reason);
+}
+
+std::ifstream OpenForReading(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+  return in;
+}
+
+// Parses the first three numbers of `text` into `p`; false if there are fewer than three.
+bool ParseThreeNumbers(const char* text, Point3* p, const char** rest = nullptr) {
+  const char* cursor = text;
+  for (int c = 0; c < 3; ++c) {
+    char* end = nullptr;
+    const double value = std::strtod(cursor, &end);
+    if (end == cursor) return false;
+    (*p)[c] = value;
+    cursor = end;
+  }
+  if (rest) *rest = cursor;
+  return true;
+}
+
+void CheckFinite(const std::string& path, long line, const Point3& p) {
+  if (!p.allFinite()) Fail(path, line, "non-finite coordinate (NaN or infinity)");
+}
+
+bool IsBlankOrComment(const std::string& line) {
+  for (char c : line) {
+    if (c == '#') return true;
+    if (!std::isspace(static_cast<unsigned char>(c))) return false;
+  }
+  return true;
+}
+
+PointList ReadXyz(const std::string& path) {
+  std::ifstream in = OpenForReading(path);
+  PointList points;
+  std::string line;
+  long number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (IsBlankOrComment(line)) continue;
+    Point3 p;
+    const char* rest = nullptr;
+    if (!ParseThreeNumbers(line.c_str(), &p, &rest)) {
+      Fail(path, number, "expected three numbers 'x y z', got '" + line.substr(0, 60) + "'");
+    }
+    CheckFinite(path, number, p);
+    points.push_back(p);
+  }
+  return points;
+}
+
+PointList ReadObj(const std::string& path) {
+  std::ifstream in = OpenForReading(path);
+  PointList points;
+  std::string line;
+  long number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.size() < 2 || line[0] != 'v' || !std::isspace(static_cast<unsigned char>(line[1]))) {
+      continue;
+    }
+    Point3 p;
+    if (!ParseThreeNumbers(line.c_str() + 1, &p)) Fail(path, number, "malformed vertex line");
+    CheckFinite(path, number, p);
+    points.push_back(p);
+  }
+  return points;
+}
+
+// Reads the next line that is not blank or a comment; false at end of file.
+bool NextContentLine(std::istream& in, std::string* line, long* number) {
+  while (std::getline(in, *line)) {
+    ++*number;
+    if (!IsBlankOrComment(*line)) return true;
+  }
+  return false;
+}
+
+PointList ReadOff(const std::string& path) {
+  std::ifstream in = OpenForReading(path);
+  std::string line;
+  long number = 0;
+  if (!NextContentLine(in, &line, &number)) Fail(path, 0, "empty file");
+  std::istringstream header(line);
+  std::string magic;
+  header >> magic;
+  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0) {
+    Fail(path, number, "not an OFF file (first token '" + magic + "')");
+  }
+  long num_vertices = -1;
+  if (!(header >> num_vertices)) {
+    if (!NextContentLine(in, &line, &number)) Fail(path, number, "missing vertex count");
+    std::istringstream counts(line);
+    counts >> num_vertices;
+  }
+  if (num_vertices < 0) Fail(path, number, "malformed vertex/face counts");
+  PointList points;
+  points.reserve(num_vertices);
+  for (long v = 0; v < num_vertices; ++v) {
+    if (!NextContentLine(in, &line, &number)) {
+      Fail(path, number, "file ends after " + std::to_string(v) + " of " +
+                             std::to_string(num_vertices) + " vertices");
+    }
+    Point3 p;
+    if (!ParseThreeNumbers(line.c_str(), &p)) Fail(path, number, "malformed vertex line");
+    CheckFinite(path, number, p);
+    points.push_back(p);
+  }
+  return points;
+}
+
+// ---- PLY ----
+
+enum class PlyFormat { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
+
+struct PlyProperty {
+  std::string name;
+  std::string type;        // scalar type, or the item type of a list
+  std::string count_type;  // list count type; empty for scalars
+};
+
+struct PlyElement {
+  std::string name;
+  long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+int PlyTypeSize(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
+      type == "float" || type == "float32") {
+    return 4;
+  }
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+bool HostIsLittleEndian() {
+  const uint16_t probe = 1;
+  uint8_t first;
+  std::memcpy(&first, &probe, 1);
+  return first == 1;
+}
+
+// Reads one binary value of `type` and returns it as a double.
+double ReadBinaryValue(std::istream& in, const std::string& type, bool swap) {
+  unsigned char bytes[8];
+  const int size = PlyTypeSize(type);
+  if (!in.read(reinterpret_cast<char*>(bytes), size)) {
+    throw std::runtime_error("truncated binary data");
+  }
+  if (swap) std::reverse(bytes, bytes + size);
+  if (type == "char" || type == "int8") { int8_t x; std::memcpy(&x, bytes, 1); return x; }
+  if (type == "uchar" || type == "uint8") return bytes[0];
+  if (type == "short" || type == "int16") { int16_t x; std::memcpy(&x, bytes, 2); return x; }
+  if (type == "ushort" || type == "uint16") { uint16_t x; std::memcpy(&x, bytes, 2); return x; }
+  if (type == "int" || type == "int32") { int32_t x; std::memcpy(&x, bytes, 4); return x; }
+  if (type == "uint" || type == "uint32") { uint32_t x; std::memcpy(&x, bytes, 4); return x; }
+  if (type == "float" || type == "float32") { float x; std::memcpy(&x, bytes, 4); return x; }
+  double x;
+  std::memcpy(&x, bytes, 8);
+  return x;
+}
+
+PointList ReadPly(const std::string& path) {
+  std::ifstream in = OpenForReading(path);
+  std::string line;
+  long number = 0;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) {
+    Fail(path, 1, "not a PLY file (missing 'ply' magic)");
+  }
+  ++number;
+  PlyFormat format = PlyFormat::kAscii;
+  bool has_format = false;
+  std::vector<PlyElement> elements;
+  bool header_done = false;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "format") {
+      std::string name;
+      tokens >> name;
+      if (name == "ascii") format = PlyFormat::kAscii;
+      else if (name == "binary_little_endian") format = PlyFormat::kBinaryLittleEndian;
+      else if (name == "binary_big_endian") format = PlyFormat::kBinaryBigEndian;
+      else Fail(path, number, "unknown PLY format '" + name + "'");
+      has_format = true;
+    } else if (keyword == "element") {
+      PlyElement element;
+      if (!(tokens >> element.name >> element.count) || element.count < 0) {
+        Fail(path, number, "malformed element line");
+      }
+      elements.push_back(element);
+    } else if (keyword == "property") {
+      if (elements.empty()) Fail(path, number, "property before any element");
+      PlyProperty property;
+      std::string type;
+      tokens >> type;
+      if (type == "list") {
+        tokens >> property.count_type >> property.type;
+        if (PlyTypeSize(property.count_type) == 0) Fail(path, number, "bad list count type");
+      } else {
+        property.type = type;
+      }
+      if (!(tokens >> property.name) || PlyTypeSize(property.type) == 0) {
+        Fail(path, number, "malformed property line");
+      }
+      elements.back().properties.push_back(property);
+    } else if (keyword == "end_header") {
+      header_done = true;
+      break;
+    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+      Fail(path, number, "unknown PLY header keyword '" + keyword + "'");
+    }
+  }
+  if (!header_done) Fail(path, number, "PLY header has no end_header");
+  if (!has_format) Fail(path, number, "PLY header has no format line");
+
+  PointList points;
+  const bool swap = (format == PlyFormat::kBinaryBigEndian) == HostIsLittleEndian();
+  for (const PlyElement& element : elements) {
+    const bool is_vertex = element.name == "vertex";
+    int xyz[3] = {-1, -1, -1};
+    for (size_t a = 0; a < element.properties.size(); ++a) {
+      const std::string& name = element.properties[a].name;
+      if (name == "x") xyz[0] = static_cast<int>(a);
+      if (name == "y") xyz[1] = static_cast<int>(a);
+      if (name == "z") xyz[2] = static_cast<int>(a);
+    }
+    if (is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0)) {
+      Fail(path, 0, "the vertex element has no x, y, z properties");
+    }
+    if (is_vertex) points.reserve(element.count);
+    std::vector<double> values(element.properties.size());
+    for (long item = 0; item < element.count; ++item) {
+      if (format == PlyFormat::kAscii) {
+        if (!std::getline(in, line)) {
+          Fail(path, number, "file ends inside element '" + element.name + "'");
+        }
+        ++number;
+        std::istringstream tokens(line);
+        for (size_t a = 0; a < element.properties.size(); ++a) {
+          const PlyProperty& property = element.properties[a];
+          long count = 1;
+          if (!property.count_type.empty() && !(tokens >> count)) count = -1;
+          if (count < 0) Fail(path, number, "malformed list");
+          for (long c = 0; c < count; ++c) {
+            std::string token;
+            if (!(tokens >> token)) Fail(path, number, "too few values on line");
+            char* end = nullptr;
+            values[a] = std::strtod(token.c_str(), &end);
+            if (*end != '\0') Fail(path, number, "malformed number '" + token + "'");
+          }
+        }
+      } else {
+        try {
+          for (size_t a = 0; a < element.properties.size(); ++a) {
+            const PlyProperty& property = element.properties[a];
+            if (property.count_type.empty()) {
+              values[a] = ReadBinaryValue(in, property.type, swap);
+            } else {
+              const double count = ReadBinaryValue(in, property.count_type, swap);
+              for (long c = 0; c < static_cast<long>(count); ++c) {
+                ReadBinaryValue(in, property.type, swap);
+              }
+            }
+          }
+        } catch (const std::runtime_error&) {
+          Fail(path, 0, "binary data ends inside element '" + element.name + "' (item " +
+                            std::to_string(item) + " of " + std::to_string(element.count) + ")");
+        }
+      }
+      if (is_vertex) {
+        const Point3 p(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
+        if (!p.allFinite()) {
+          Fail(path, format == PlyFormat::kAscii ? number : 0,
+               "vertex " + std::to_string(item) + " has a non-finite coordinate");
+        }
+        points.push_back(p);
+      }
+    }
+    if (is_vertex) break;
+  }
+  return points;
+}
+
+void WritePly(const std::string& path, const PointCloud& cloud, bool overwrite) {
+  AtomicOutputFile file(path, overwrite);
+  std::ofstream& out = file.stream();
+  const bool with_normals = !cloud.normals.empty();
+  out << "ply\nformat binary_little_endian 1.0\ncomment written by lpd\n";
+  out << "element vertex " << cloud.points.size() << "\n";
+  out << "property double x\nproperty double y\nproperty double z\n";
+  if (with_normals) out << "property float nx\nproperty float ny\nproperty float nz\n";
+  for (const auto& scalar : cloud.scalars) out << "property float " << scalar.first << "\n";
+  out << "end_header\n";
+  if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
+  std::vector<char> record;
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    record.clear();
+    auto append = [&record](const void* data, size_t size) {
+      const char* bytes = static_cast<const char*>(data);
+      record.insert(record.end(), bytes, bytes + size);
+    };
+    append(cloud.points[i].data(), 3 * sizeof(double));
+    if (with_normals) {
+      const Eigen::Vector3f normal = cloud.normals[i].cast<float>();
+      append(normal.data(), 3 * sizeof(float));
+    }
+    for (const auto& scalar : cloud.scalars) append(&scalar.second[i], sizeof(float));
+    out.write(record.data(), static_cast<std::streamsize>(record.size()));
+  }
+  file.Commit();
+}
+
+void WriteXyz(const std::string& path, const PointCloud& cloud, bool overwrite) {
+  AtomicOutputFile file(path, overwrite);
+  std::ofstream& out = file.stream();
+  out.precision(17);
+  for (const Point3& p : cloud.points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  file.Commit();
+}
+
+}  // namespace
+
+std::string FileExtension(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string extension = path.substr(dot + 1);
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+PointList ReadPoints(const std::string& path) {
+  const std::string extension = FileExtension(path);
+  PointList points;
+  if (extension == "xyz" || extension == "txt" || extension == "pts") {
+    points = ReadXyz(path);
+  } else if (extension == "ply") {
+    points = ReadPly(path);
+  } else if (extension == "off") {
+    points = ReadOff(path);
+  } else if (extension == "obj") {
+    points = ReadObj(path);
+  } else {
+    Fail(path, 0, "unknown point-cloud format '." + extension +
+                      "' (expected .xyz, .txt, .pts, .ply, .off or .obj)");
+  }
+  if (points.empty()) Fail(path, 0, "the file contains no points");
+  return points;
+}
+
+void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite) {
+  for (const auto& scalar : cloud.scalars) {
+    if (scalar.second.size() != cloud.points.size()) {
+      throw std::invalid_argument("scalar property '" + scalar.first + "' has the wrong size");
+    }
+  }
+  const std::string extension = FileExtension(path);
+  if (extension == "ply") {
+    WritePly(path, cloud, overwrite);
+  } else if (extension == "xyz" || extension == "txt") {
+    WriteXyz(path, cloud, overwrite);
+  } else {
+    throw std::runtime_error("cannot write '" + path +
+                             "': the output extension must be .ply, .xyz or .txt");
+  }
+}
+
+}  // namespace lpd::experiments

@@ -1,0 +1,39 @@
+// lpd: reading and writing point clouds.
+//
+// Read: XYZ text (".xyz", ".txt", ".pts": the first three numbers of each line; '#' starts a
+// comment; extra columns are ignored), PLY (ascii, binary little or big endian; the x, y, z
+// properties of the "vertex" element), OFF and OBJ (vertices only). Every reader rejects
+// malformed lines, NaN and infinite coordinates with "FILE:LINE: reason", and empty files.
+// Write: PLY (binary little endian, with normals and per-point scalar properties that
+// CloudCompare and MeshLab show as scalar fields) or XYZ text, chosen by extension; writes
+// are atomic (see AtomicOutputFile).
+#ifndef LPD_EXPERIMENTS_POINT_CLOUD_IO_H_
+#define LPD_EXPERIMENTS_POINT_CLOUD_IO_H_
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "energy/normalization.h"
+
+namespace lpd::experiments {
+
+struct PointCloud {
+  energy::PointList points;
+  energy::PointList normals;  // empty, or one per point
+  // Named per-point scalar properties (e.g. "outlier", "feature_score"), one value per point.
+  std::vector<std::pair<std::string, std::vector<float>>> scalars;
+};
+
+// Throws std::runtime_error with a one-line reason on any problem.
+energy::PointList ReadPoints(const std::string& path);
+
+// Writes `cloud` to `path` (".ply" or ".xyz"/".txt"); throws std::runtime_error on failure.
+void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite);
+
+// Lower-cased extension of `path` without the dot ("" if none).
+std::string FileExtension(const std::string& path);
+
+}  // namespace lpd::experiments
+
+#endif  // LPD_EXPERIMENTS_POINT_CLOUD_IO_H_

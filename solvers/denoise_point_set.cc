@@ -1,0 +1,61 @@
+#include "solvers/denoise_point_set.h"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#include "energy/variables.h"
+
+namespace lpd::solvers {
+
+bool DenoiseOptions::IsValid(std::string* error) const {
+  return problem.IsValid(error) && minimizer.IsValid(error) && final_step.IsValid(error);
+}
+
+DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
+                              const AlternatingMinimizer::IterationCallback& callback) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument(error);
+
+  DenoiseResult result;
+  const energy::Problem problem =
+      energy::BuildProblem(points, options.problem, options.minimizer.num_threads);
+  result.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+  energy::Variables v = energy::InitialVariables(problem);
+  result.summary = AlternatingMinimizer::Minimize(problem, options.minimizer, &v, callback);
+  if (!result.summary.IsSolutionUsable()) {
+    throw std::runtime_error("minimization failed: " + result.summary.message);
+  }
+
+  ProjectOntoTangentPlanes(problem, v, &result.projected, &result.normals);
+  result.indicators = ComputeIndicators(problem, v, options.final_step);
+  const int n = problem.num_points();
+  for (int i = 0; i < n; ++i) {
+    result.num_outliers += result.indicators.is_outlier[i];
+    result.num_features += result.indicators.is_feature[i];
+  }
+  bool remove = options.final_step.remove_outliers;
+  if (remove && result.num_outliers > options.final_step.max_removed_fraction * n) {
+    char note[256];
+    std::snprintf(note, sizeof(note),
+                  "outliers kept: %.1f%% of the points were flagged (more than "
+                  "max_removed_fraction = %.0f%%), so mu_l = %.3g is below the noise level",
+                  100.0 * result.num_outliers / n,
+                  100.0 * options.final_step.max_removed_fraction,
+                  options.minimizer.energy.mu_l);
+    result.removal_note = note;
+    remove = false;
+  }
+  result.kept.assign(n, 1);
+  if (remove) {
+    for (int i = 0; i < n; ++i) result.kept[i] = !result.indicators.is_outlier[i];
+    result.num_removed = result.num_outliers;
+  }
+  result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace lpd::solvers

@@ -1,0 +1,83 @@
+#include "solvers/final_denoising.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace lpd::solvers {
+namespace {
+
+// Planes whose normal part is shorter than this (t_i is a unit-scale 4-vector) are no planes.
+constexpr double kMinNormalSquaredNorm = 1e-24;
+
+bool InUnitInterval(double x) { return x > 0.0 && x <= 1.0; }
+
+}  // namespace
+
+bool FinalDenoisingOptions::IsValid(std::string* error) const {
+  std::ostringstream out;
+  if (!InUnitInterval(outlier_line_threshold)) {
+    out << "outlier_threshold must be in (0, 1], got " << outlier_line_threshold;
+  } else if (!InUnitInterval(outlier_fraction)) {
+    out << "outlier_fraction must be in (0, 1], got " << outlier_fraction;
+  } else if (!InUnitInterval(feature_line_threshold)) {
+    out << "feature_threshold must be in (0, 1], got " << feature_line_threshold;
+  } else if (!(feature_fraction >= 0.0 && feature_fraction < 1.0)) {
+    out << "feature_fraction must be in [0, 1), got " << feature_fraction;
+  } else if (!InUnitInterval(max_removed_fraction)) {
+    out << "max_removed_fraction must be in (0, 1], got " << max_removed_fraction;
+  } else {
+    return true;
+  }
+  *error = out.str();
+  return false;
+}
+
+PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
+                                  const FinalDenoisingOptions& options) {
+  const int n = problem.num_points();
+  const int k = problem.k();
+  const auto& graph = problem.graph;
+  PointIndicators indicators;
+  indicators.outlier_score.resize(n);
+  indicators.feature_score.resize(n);
+  indicators.is_outlier.resize(n);
+  indicators.is_feature.resize(n);
+  for (int i = 0; i < n; ++i) {
+    int low_l = 0;
+    for (int a = 1; a <= k; ++a) low_l += v.l(i, a) < options.outlier_line_threshold;
+    indicators.outlier_score[i] = static_cast<double>(low_l) / k;
+    indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
+
+    const int begin = graph.incident_offsets[i];
+    const int end = graph.incident_offsets[i + 1];
+    int low_m = 0;
+    for (int e = begin; e < end; ++e) {
+      low_m += v.m[graph.incident_pairs[e]] < options.feature_line_threshold;
+    }
+    indicators.feature_score[i] = end > begin ? static_cast<double>(low_m) / (end - begin) : 0.0;
+    indicators.is_feature[i] = indicators.feature_score[i] > options.feature_fraction;
+  }
+  return indicators;
+}
+
+void ProjectOntoTangentPlanes(const energy::Problem& problem, const energy::Variables& v,
+                              energy::PointList* points, energy::PointList* normals) {
+  const int n = problem.num_points();
+  points->resize(n);
+  normals->resize(n);
+  for (int i = 0; i < n; ++i) {
+    const energy::Point3& p = problem.points[i];
+    const Eigen::Vector3d normal = v.t.row(i).head<3>().transpose();
+    const double normal_squared = normal.squaredNorm();
+    if (normal_squared > kMinNormalSquaredNorm) {
+      const double offset = normal.dot(p) + v.t(i, 3);  // t_i^T q_i
+      (*points)[i] = problem.frame.ToInput(p - normal * (offset / normal_squared));
+      (*normals)[i] = normal / std::sqrt(normal_squared);
+    } else {
+      (*points)[i] = problem.frame.ToInput(p);
+      (*normals)[i].setZero();
+    }
+  }
+}
+
+}  // namespace lpd::solvers

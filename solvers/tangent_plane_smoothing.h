@@ -1,0 +1,67 @@
+// lpd: the global step of Alg. 1 (line 14): T from the sparse SPD system of Eq. (9).
+//
+//   K T = W,  K = eta diag(alpha) + lambda sum_{(i,j) in M} beta_ij m_ij (e_i - s_ij e_j)
+//                                                             (e_i - s_ij e_j)^T,
+//             W = eta diag(alpha) H      (n x 4: one right-hand side per plane coordinate)
+// T is the exact minimizer of E_smooth + E_stitch over T. K's sparsity pattern (compressed
+// rows: the diagonal and both entries of every pair of M) is built once; each solve only
+// refreshes the values, then runs Jacobi-preconditioned conjugate gradients on the four
+// columns together, warm-started from the current T. CG started anywhere decreases the
+// K-norm error monotonically, so even an inexact solve never increases the energy.
+#ifndef LPD_SOLVERS_TANGENT_PLANE_SMOOTHING_H_
+#define LPD_SOLVERS_TANGENT_PLANE_SMOOTHING_H_
+
+#include <string>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include "energy/energy_parameters.h"
+#include "energy/problem.h"
+#include "energy/variables.h"
+
+namespace lpd::solvers {
+
+struct LinearSolverOptions {
+  // Stop when |K t - w| <= relative_tolerance * |w| for every column.
+  double relative_tolerance = 1e-10;
+  // Upper bound on CG iterations per solve.
+  int max_iterations = 2000;
+
+  bool IsValid(std::string* error) const;
+};
+
+struct LinearSolveStats {
+  int iterations = 0;               // CG iterations of the slowest column
+  double relative_residual = 0.0;   // worst column's |K t - w| / |w|
+};
+
+class TangentPlaneSmoother {
+ public:
+  explicit TangentPlaneSmoother(const energy::Problem& problem);
+
+  // Replaces v->t by the solution of Eq. (9) for the current H, M, S.
+  LinearSolveStats Update(const energy::EnergyParameters& parameters,
+                          const LinearSolverOptions& options, int num_threads,
+                          energy::Variables* v);
+
+  // K of Eq. (9) for the given variables, as an Eigen matrix (for tests and inspection).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> SystemMatrix(
+      const energy::EnergyParameters& parameters, const energy::Variables& v);
+
+ private:
+  void AssembleValues(const energy::EnergyParameters& parameters, const energy::Variables& v,
+                      int num_threads);
+  void Multiply(const energy::PlaneField& x, int num_threads, energy::PlaneField* y) const;
+
+  const energy::Problem& problem_;
+  std::vector<int> row_offsets_;        // CSR row starts, size n + 1
+  std::vector<int> columns_;            // CSR column of each stored entry
+  std::vector<double> values_;          // CSR values, refreshed by AssembleValues
+  std::vector<int> diagonal_entry_;     // entry of K_ii per row
+  std::vector<int> pair_entry_;         // entries of K_ij and K_ji per pair (2 per pair)
+};
+
+}  // namespace lpd::solvers
+
+#endif  // LPD_SOLVERS_TANGENT_PLANE_SMOOTHING_H_
