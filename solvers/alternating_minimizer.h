@@ -26,8 +26,8 @@ class AlternatingMinimizer {
     energy::EnergyParameters energy;
 
     // ---- schedule (Alg. 1) ----
-    // Outer iterations at most (maxIter of Alg. 1).
-    int max_iterations = 10;
+    // Outer iterations at most (maxIter of Alg. 1; the reference implementation runs 5).
+    int max_iterations = 5;
     // (T, M, S) passes per outer iteration (Alg. 1 line 13: 2).
     int inner_iterations = 2;
     // Stop when |E_t - E_{t-w}| <= energy_tolerance |E_{t-w}|, w = energy_window (Sec. 3.3:

@@ -42,10 +42,18 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
   indicators.feature_score.resize(n);
   indicators.is_outlier.resize(n);
   indicators.is_feature.resize(n);
+  // Outlier votes: every line process in which q_i is the data point, l_ii and l_ji for
+  // each j with i in N(j) (Sec. 4.3: the points "too unfit to serve for local fitting").
+  std::vector<int> votes(n, 0), voters(n, 0);
+  for (int j = 0; j < n; ++j) {
+    for (int a = 0; a <= k; ++a) {
+      const int i = a == 0 ? j : graph.NeighborsOf(j)[a - 1];
+      votes[i] += v.l(j, a) < options.outlier_line_threshold;
+      ++voters[i];
+    }
+  }
   for (int i = 0; i < n; ++i) {
-    int low_l = 0;
-    for (int a = 1; a <= k; ++a) low_l += v.l(i, a) < options.outlier_line_threshold;
-    indicators.outlier_score[i] = static_cast<double>(low_l) / k;
+    indicators.outlier_score[i] = static_cast<double>(votes[i]) / voters[i];
     indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
 
     const int begin = graph.incident_offsets[i];

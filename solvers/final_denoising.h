@@ -1,7 +1,12 @@
 // lpd: the final denoising of Sec. 3.4: indicators, projection onto t_i, outlier removal.
 //
-//   outlier score of i = fraction of j in N(i) with l_ij < outlier_line_threshold;
-//                        i is an outlier if the score >= outlier_fraction (paper: 90%, 0.5)
+//   outlier score of i = fraction of the line processes with q_i as data point (l_ii, and
+//                        l_ji for every j with i in N(j)) below outlier_line_threshold;
+//                        i is an outlier if the score >= outlier_fraction (paper: 90%, 0.5).
+//                        Sec. 3.4 speaks of "l_ij, j in N(i)"; read as l_ij scored on i's
+//                        own plane h_i, an isolated outlier whose plane follows the nearby
+//                        surface is never flagged, so we use the reading of Sec. 4.3 and
+//                        Fig. 6: the points the neighbouring fits reject.
 //   feature score of i = fraction of pairs (i, j) in M with m_ij < feature_line_threshold;
 //                        i is near a feature if the score > feature_fraction (paper: 70%, 0.5)
 //   p_i' = p_i - n_i (t_i^T q_i) / |n_i|^2,  n_i = first three coordinates of t_i

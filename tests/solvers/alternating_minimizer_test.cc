@@ -1,0 +1,99 @@
+// Alg. 1: every block update is an exact minimizer, so the energy never increases from one
+// block to the next (after the first H step puts H on the unit sphere).
+#include "solvers/alternating_minimizer.h"
+
+#include <gtest/gtest.h>
+
+#include "test_problems.h"
+
+namespace lpd::solvers {
+namespace {
+
+void ExpectMonotoneTrace(const SolverSummary& summary) {
+  ASSERT_GT(summary.steps.size(), 2u);
+  for (size_t s = 1; s < summary.steps.size(); ++s) {
+    const double before = summary.steps[s - 1].energy.total();
+    const double after = summary.steps[s].energy.total();
+    EXPECT_LE(after, before + 1e-12 * std::abs(before))
+        << "block " << summary.steps[s].block << " of iteration " << summary.steps[s].iteration
+        << " raised the energy from " << before << " to " << after;
+  }
+}
+
+AlternatingMinimizer::Options TightOptions(const energy::EnergyParameters& parameters) {
+  AlternatingMinimizer::Options options;
+  options.energy = parameters;
+  options.max_iterations = 6;
+  options.energy_tolerance = 0.0;
+  options.linear_solver.relative_tolerance = 1e-12;
+  options.num_threads = 2;
+  return options;
+}
+
+TEST(AlternatingMinimizer, EnergyNeverIncreasesFromTheInitialization) {
+  for (uint64_t seed : {1, 2, 3}) {
+    energy::ProblemOptions problem_options;
+    problem_options.k = 8;
+    const energy::Problem problem =
+        energy::BuildProblem(testing::NoisySphere(400, 0.03, seed), problem_options);
+    for (const energy::EnergyParameters& parameters :
+         {energy::EnergyParameters(), testing::BalancedParameters()}) {
+      energy::Variables v = energy::InitialVariables(problem);
+      const SolverSummary summary =
+          AlternatingMinimizer::Minimize(problem, TightOptions(parameters), &v);
+      ASSERT_TRUE(summary.IsSolutionUsable()) << summary.message;
+      EXPECT_EQ(summary.steps.size(), 6u * (2 + 3 * 2));
+      ExpectMonotoneTrace(summary);
+    }
+  }
+}
+
+TEST(AlternatingMinimizer, EnergyNeverIncreasesFromRandomStates) {
+  energy::ProblemOptions problem_options;
+  problem_options.k = 6;
+  const energy::Problem problem =
+      energy::BuildProblem(testing::NoisyPlane(300, 0.05, 9), problem_options);
+  for (uint64_t seed : {4, 5}) {
+    energy::Variables v = testing::RandomVariables(problem, seed);
+    AlternatingMinimizer::Options options = TightOptions(testing::BalancedParameters());
+    options.inner_iterations = 3;
+    ExpectMonotoneTrace(AlternatingMinimizer::Minimize(problem, options, &v));
+  }
+}
+
+TEST(AlternatingMinimizer, StopsOnTheEnergyWindowAndOnTheCallback) {
+  energy::ProblemOptions problem_options;
+  problem_options.k = 6;
+  const energy::Problem problem =
+      energy::BuildProblem(testing::NoisyPlane(200, 0.0, 2), problem_options);
+  AlternatingMinimizer::Options options;
+  options.max_iterations = 50;
+  options.energy_tolerance = 0.5;  // generous: converges after window + 1 iterations at most
+  energy::Variables v = energy::InitialVariables(problem);
+  SolverSummary summary = AlternatingMinimizer::Minimize(problem, options, &v);
+  EXPECT_EQ(summary.termination, TerminationType::kConvergence);
+  EXPECT_LT(summary.num_iterations, 50);
+
+  v = energy::InitialVariables(problem);
+  summary = AlternatingMinimizer::Minimize(
+      problem, options, &v, [](const IterationRecord& r) { return r.iteration < 2; });
+  EXPECT_EQ(summary.termination, TerminationType::kUserAbort);
+  EXPECT_EQ(summary.num_iterations, 2);
+}
+
+TEST(AlternatingMinimizer, InvalidOptionsFailWithoutWork) {
+  energy::ProblemOptions problem_options;
+  problem_options.k = 4;
+  const energy::Problem problem =
+      energy::BuildProblem(testing::NoisyPlane(50, 0.01, 2), problem_options);
+  AlternatingMinimizer::Options options;
+  options.energy.lambda = -1.0;
+  energy::Variables v = energy::InitialVariables(problem);
+  const SolverSummary summary = AlternatingMinimizer::Minimize(problem, options, &v);
+  EXPECT_EQ(summary.termination, TerminationType::kFailure);
+  EXPECT_NE(summary.message.find("lambda"), std::string::npos);
+  EXPECT_EQ(summary.num_iterations, 0);
+}
+
+}  // namespace
+}  // namespace lpd::solvers
