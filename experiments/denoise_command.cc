@@ -112,7 +112,6 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
                  static_cast<unsigned long long>(FLAGS_seed));
   } else {
     input = ReadPoints(arguments[0]);
-    std::fprintf(stderr, "read %zu points from %s\n", input.size(), arguments[0].c_str());
   }
 
   const solvers::DenoiseResult result = solvers::DenoisePointSet(

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# lpd denoise on bad input: one error line on stderr, non-zero exit, no output file left.
+# Degenerate but valid inputs (collinear, coplanar, duplicates) give finite output.
+# Usage: cli_bad_input_test.sh PATH_TO_LPD
+set -u
+lpd=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+failures=0
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_error NAME ARGS...: the run must fail with exactly one stderr line and no output.
+expect_error() {
+  local name=$1; shift
+  local out="$dir/out_$name.${EXT:-ply}"
+  "$lpd" denoise "$@" -o "$out" >"$dir/stdout" 2>"$dir/stderr"
+  local code=$?
+  local lines
+  lines=$(wc -l <"$dir/stderr")
+  [ "$code" -ne 0 ] || fail "$name: exit code 0"
+  [ "$lines" -eq 1 ] || fail "$name: $lines stderr lines: $(cat "$dir/stderr")"
+  ls "$dir" | grep -q "out_$name" && fail "$name: output file left behind"
+  echo "ok   $name: $(cat "$dir/stderr")"
+}
+
+# expect_finite NAME FILE: the run must succeed and write only finite coordinates.
+expect_finite() {
+  local name=$1 input=$2
+  local out="$dir/out_$name.xyz"
+  if ! "$lpd" denoise "$input" -o "$out" --k=8 --quiet >"$dir/stdout" 2>"$dir/stderr"; then
+    fail "$name: failed: $(cat "$dir/stderr")"
+    return
+  fi
+  grep -qiE 'nan|inf' "$out" && fail "$name: non-finite output"
+  echo "ok   $name: $(wc -l <"$out") finite points"
+}
+
+python3 - "$dir" <<'PY'
+import math, random, sys
+d = sys.argv[1]
+random.seed(1)
+def write(name, rows):
+    with open(f"{d}/{name}", "w") as f:
+        f.writelines(" ".join(repr(c) for c in r) + "\n" for r in rows)
+plane = [(random.random(), random.random(), 0.001 * random.gauss(0, 1)) for _ in range(300)]
+write("good.xyz", plane)
+write("nan.xyz", plane[:50] + [(0.5, float("nan"), 0.0)] + plane[50:])
+write("inf.xyz", plane[:50] + [(0.5, float("inf"), 0.0)] + plane[50:])
+write("few.xyz", plane[:20])
+write("same.xyz", [(1.0, 2.0, 3.0)] * 100)
+write("collinear.xyz", [(0.01 * i, 0.02 * i, -0.03 * i) for i in range(200)])
+write("coplanar.xyz", [(random.random(), random.random(), 0.0) for _ in range(300)])
+write("duplicates.xyz", plane + plane + [plane[0]] * 30)
+with open(f"{d}/malformed.xyz", "w") as f:
+    f.write("0 0 0\n1 1 oops\n")
+open(f"{d}/empty.xyz", "w").close()
+PY
+
+expect_error missing "$dir/does_not_exist.xyz"
+expect_error empty "$dir/empty.xyz"
+expect_error malformed "$dir/malformed.xyz"
+expect_error nan "$dir/nan.xyz"
+expect_error inf "$dir/inf.xyz"
+expect_error too_few "$dir/few.xyz" --k=20
+expect_error identical "$dir/same.xyz" --k=8
+expect_error negative_lambda "$dir/good.xyz" --lambda=-1
+expect_error zero_k "$dir/good.xyz" --k=0
+expect_error zero_mu_l "$dir/good.xyz" --mu_l=0
+expect_error zero_iters "$dir/good.xyz" --max_iters=0
+expect_error both_mu_m "$dir/good.xyz" --mu_m=0.2 --mu_m_deg=20
+expect_error unknown_flag "$dir/good.xyz" --no_such_flag=3
+expect_error bad_flag_value "$dir/good.xyz" --k=abc
+EXT=abc expect_error bad_extension "$dir/good.xyz"
+
+expect_finite collinear "$dir/collinear.xyz"
+expect_finite coplanar "$dir/coplanar.xyz"
+expect_finite duplicates "$dir/duplicates.xyz"
+
+# An existing output file is never overwritten without --overwrite.
+echo "precious" >"$dir/keep.xyz"
+if "$lpd" denoise "$dir/good.xyz" -o "$dir/keep.xyz" --quiet >/dev/null 2>&1; then
+  fail "existing output was overwritten"
+fi
+[ "$(cat "$dir/keep.xyz")" = "precious" ] || fail "existing output was modified"
+# Output equal to input is refused.
+"$lpd" denoise "$dir/good.xyz" -o "$dir/good.xyz" --overwrite >/dev/null 2>&1 && fail "input overwritten"
+
+[ "$failures" -eq 0 ] && echo "all CLI checks passed"
+exit "$failures"

@@ -1,0 +1,121 @@
+// Readers and writers: round trips, every format, and clear errors on bad files.
+#include "experiments/point_cloud_io.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "experiments/atomic_output_file.h"
+
+namespace lpd::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PointCloudIoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("lpd_io_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                  "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+  std::string Write(const std::string& name, const std::string& text) {
+    const std::string path = (directory_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+  // The message of the exception ReadPoints throws on `path` ("" if none).
+  static std::string ReadError(const std::string& path) {
+    try {
+      ReadPoints(path);
+    } catch (const std::runtime_error& error) {
+      return error.what();
+    }
+    return "";
+  }
+  fs::path directory_;
+};
+
+TEST_F(PointCloudIoTest, ReadsEveryFormat) {
+  EXPECT_EQ(ReadPoints(Write("a.xyz", "# comment\n1 2 3 9 9\n\n4 5 6\n")).size(), 2u);
+  const auto obj = ReadPoints(Write("a.obj", "# c\nv 1 2 3\nvn 0 0 1\nv 4 5 6\nf 1 2 2\n"));
+  ASSERT_EQ(obj.size(), 2u);
+  EXPECT_EQ(obj[1], energy::Point3(4, 5, 6));
+  const auto off = ReadPoints(Write("a.off", "OFF\n# c\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  ASSERT_EQ(off.size(), 3u);
+  EXPECT_EQ(off[2], energy::Point3(0, 1, 0));
+  const auto ply = ReadPoints(Write(
+      "a.ply",
+      "ply\nformat ascii 1.0\nelement vertex 2\nproperty float y\nproperty float x\n"
+      "property float z\nproperty uchar red\nelement face 1\nproperty list uchar int "
+      "vertex_indices\nend_header\n1 2 3 255\n4 5 6 0\n3 0 1 1\n"));
+  ASSERT_EQ(ply.size(), 2u);
+  EXPECT_EQ(ply[0], energy::Point3(2, 1, 3));
+}
+
+TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
+  PointCloud cloud;
+  cloud.points = {{1.5, -2.25, 1e-9}, {3, 4, 5}};
+  cloud.normals = {{0, 0, 1}, {1, 0, 0}};
+  cloud.scalars = {{"feature", {1.0f, 0.0f}}};
+  const std::string path = (directory_ / "out.ply").string();
+  WritePointCloud(path, cloud, false);
+  const auto points = ReadPoints(path);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0], cloud.points[0]);
+  EXPECT_EQ(points[1], cloud.points[1]);
+  // An existing output is never replaced without `overwrite`, and is left intact.
+  EXPECT_THROW(WritePointCloud(path, PointCloud{{{9, 9, 9}}, {}, {}}, false), std::runtime_error);
+  EXPECT_EQ(ReadPoints(path).size(), 2u);
+  const std::string xyz = (directory_ / "out.xyz").string();
+  WritePointCloud(xyz, cloud, false);
+  EXPECT_EQ(ReadPoints(xyz)[0], cloud.points[0]);
+}
+
+TEST_F(PointCloudIoTest, BadFilesGiveOneLineErrorsNamingTheProblem) {
+  EXPECT_NE(ReadError((directory_ / "missing.xyz").string()).find("cannot open"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("empty.xyz", "")).find("no points"), std::string::npos);
+  EXPECT_NE(ReadError(Write("bad.xyz", "1 2 3\n1 2 x\n")).find("bad.xyz:2:"), std::string::npos);
+  EXPECT_NE(ReadError(Write("nan.xyz", "1 2 3\nnan 2 3\n")).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("inf.xyz", "1 2 3\n1 inf 3\n")).find("inf.xyz:2:"), std::string::npos);
+  EXPECT_NE(ReadError(Write("inf2.xyz", "1 2 3\n1 -inf 3\n")).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("a.abc", "1 2 3\n")).find("unknown point-cloud format"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("t.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 5\n"
+                                     "property float x\nproperty float y\nproperty float z\n"
+                                     "end_header\nabc"))
+                .find("binary data ends"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("n.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                     "property float x\nproperty float y\nend_header\n1 2\n"))
+                .find("no x, y, z"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("short.off", "OFF\n3 1 0\n0 0 0\n")).find("file ends"),
+            std::string::npos);
+  for (const char* name : {"missing.xyz", "empty.xyz", "bad.xyz", "nan.xyz", "t.ply"}) {
+    const std::string message = ReadError((directory_ / name).string());
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST_F(PointCloudIoTest, AbandonedAtomicFileLeavesNothingBehind) {
+  const std::string path = (directory_ / "partial.ply").string();
+  {
+    AtomicOutputFile file(path, false);
+    file.stream() << "half";
+  }
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_TRUE(fs::is_empty(directory_));
+}
+
+}  // namespace
+}  // namespace lpd::experiments
