@@ -84,7 +84,8 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     throw std::invalid_argument("denoise takes at most one INPUT file, got " +
                                 std::to_string(arguments.size()));
   }
-  const solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
+  solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
+  options.minimizer.trace_blocks = FLAGS_trace;  // per-block energies cost a pass each
   const bool use_default = arguments.empty();
   if (!use_default && FLAGS_output.empty()) {
     throw std::invalid_argument("missing output file: give -o OUTPUT");

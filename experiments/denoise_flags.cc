@@ -23,7 +23,7 @@ DEFINE_int32(inner_iters, 2, "(T, M, S) passes per outer iteration (paper: 2)");
 DEFINE_double(energy_tolerance, 0.01,
               "stop when the energy changes by less than this fraction over three "
               "iterations (paper: 0.01); 0 runs all iterations");
-DEFINE_double(linear_tolerance, 1e-10, "relative residual at which the T solve (Eq. 9) stops");
+DEFINE_double(linear_tolerance, 1e-6, "relative residual at which the T solve (Eq. 9) stops");
 DEFINE_int32(max_cg_iterations, 2000, "conjugate-gradient iterations per T solve, at most");
 DEFINE_int32(threads, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
              "worker threads (default: all cores)");

@@ -24,7 +24,8 @@ namespace lpd::solvers {
 
 struct LinearSolverOptions {
   // Stop when |K t - w| <= relative_tolerance * |w| for every column.
-  double relative_tolerance = 1e-10;
+  // 1e-6: on FANDISK the output matches 1e-10 to five digits at two thirds of the time.
+  double relative_tolerance = 1e-6;
   // Upper bound on CG iterations per solve.
   int max_iterations = 2000;
 
