@@ -20,6 +20,12 @@ void ExpectMonotoneTrace(const SolverSummary& summary) {
   }
 }
 
+energy::Problem PlaneProblem(int n, double sigma, uint64_t seed, int k) {
+  energy::ProblemOptions problem_options;
+  problem_options.k = k;
+  return energy::BuildProblem(testing::NoisyPlane(n, sigma, seed), problem_options);
+}
+
 AlternatingMinimizer::Options TightOptions(const energy::EnergyParameters& parameters) {
   AlternatingMinimizer::Options options;
   options.energy = parameters;
@@ -49,10 +55,7 @@ TEST(AlternatingMinimizer, EnergyNeverIncreasesFromTheInitialization) {
 }
 
 TEST(AlternatingMinimizer, EnergyNeverIncreasesFromRandomStates) {
-  energy::ProblemOptions problem_options;
-  problem_options.k = 6;
-  const energy::Problem problem =
-      energy::BuildProblem(testing::NoisyPlane(300, 0.05, 9), problem_options);
+  const energy::Problem problem = PlaneProblem(300, 0.05, 9, 6);
   for (uint64_t seed : {4, 5}) {
     energy::Variables v = testing::RandomVariables(problem, seed);
     AlternatingMinimizer::Options options = TightOptions(testing::BalancedParameters());
@@ -62,10 +65,7 @@ TEST(AlternatingMinimizer, EnergyNeverIncreasesFromRandomStates) {
 }
 
 TEST(AlternatingMinimizer, StopsOnTheEnergyWindowAndOnTheCallback) {
-  energy::ProblemOptions problem_options;
-  problem_options.k = 6;
-  const energy::Problem problem =
-      energy::BuildProblem(testing::NoisyPlane(200, 0.0, 2), problem_options);
+  const energy::Problem problem = PlaneProblem(200, 0.0, 2, 6);
   AlternatingMinimizer::Options options;
   options.max_iterations = 50;
   options.energy_tolerance = 0.5;  // generous: converges after window + 1 iterations at most
@@ -82,10 +82,7 @@ TEST(AlternatingMinimizer, StopsOnTheEnergyWindowAndOnTheCallback) {
 }
 
 TEST(AlternatingMinimizer, InvalidOptionsFailWithoutWork) {
-  energy::ProblemOptions problem_options;
-  problem_options.k = 4;
-  const energy::Problem problem =
-      energy::BuildProblem(testing::NoisyPlane(50, 0.01, 2), problem_options);
+  const energy::Problem problem = PlaneProblem(50, 0.01, 2, 4);
   AlternatingMinimizer::Options options;
   options.energy.lambda = -1.0;
   energy::Variables v = energy::InitialVariables(problem);
