@@ -11,7 +11,7 @@ double FittingTerm::Evaluate(const Variables& v) const {
     const Eigen::Vector4d h = v.h.row(i).transpose();
     double point_sum = 0.0;
     for (int a = 0; a < columns; ++a) {
-      const double r = Residual(h, ColumnPoint(i, a));
+      const double r = Residual(h, problem_.graph.FittingPoint(i, a));
       point_sum += penalty_.LineProcessCost(r * r, v.l(i, a));
     }
     sum += problem_.alpha[i] * point_sum;
@@ -26,7 +26,7 @@ void FittingTerm::UpdateLineProcesses(Variables* v) const {
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector4d h = v->h.row(i).transpose();
     for (int a = 0; a < columns; ++a) {
-      const double r = Residual(h, ColumnPoint(i, a));
+      const double r = Residual(h, problem_.graph.FittingPoint(i, a));
       v->l(i, a) = penalty_.OptimalLineProcess(r * r);  // Eq. (6)
     }
   }

@@ -22,11 +22,6 @@ class FittingTerm {
   // l_ij = (mu_l / (mu_l + (h_i^T q_j)^2))^2 for all i, j (Eq. 6).
   void UpdateLineProcesses(Variables* v) const;
 
-  // The point index of column `a` of row i of L: i for a = 0, else the (a-1)-th neighbour.
-  int ColumnPoint(int i, int a) const {
-    return a == 0 ? i : problem_.graph.NeighborsOf(i)[a - 1];
-  }
-
   // h^T q_j, the algebraic distance of p_j to the plane h.
   double Residual(const Eigen::Vector4d& h, int j) const {
     return h.head<3>().dot(problem_.points[j]) + h[3];

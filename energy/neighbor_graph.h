@@ -28,6 +28,11 @@ struct NeighborGraph {
   int num_points() const { return k > 0 ? static_cast<int>(neighbors.size()) / k : 0; }
   int num_pairs() const { return static_cast<int>(pairs.size()); }
   const int* NeighborsOf(int i) const { return neighbors.data() + static_cast<size_t>(i) * k; }
+  // The data point of column `column` of N(i) u {i}: i itself for column 0, else the
+  // (column - 1)-th neighbour (the layout of the fitting line processes L, see Variables).
+  int FittingPoint(int i, int column) const {
+    return column == 0 ? i : NeighborsOf(i)[column - 1];
+  }
 };
 
 // Builds N and M for `points` with a k-d tree (nanoflann), using `num_threads` threads.

@@ -27,6 +27,7 @@ class BoxShape {
   double DistanceToEdges(const energy::Point3& p) const;
 
   double Diagonal() const { return 2.0 * half_extents_.norm(); }
+  energy::Point3 Size() const { return 2.0 * half_extents_; }
 
  private:
   energy::Point3 center_;

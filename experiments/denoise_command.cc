@@ -109,7 +109,8 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     std::fprintf(stderr,
                  "no INPUT given: denoising the built-in box %.1f x %.1f x %.1f, %d points, "
                  "Gaussian noise %.2f%% of the diagonal, seed %llu\n",
-                 1.0, 0.8, 0.6, FLAGS_default_points, 100.0 * FLAGS_default_noise,
+                 default_input.shape.Size().x(), default_input.shape.Size().y(),
+                 default_input.shape.Size().z(), FLAGS_default_points, 100.0 * FLAGS_default_noise,
                  static_cast<unsigned long long>(FLAGS_seed));
   } else {
     input = ReadPoints(arguments[0]);

@@ -39,7 +39,8 @@ const std::map<std::string, Command>& Commands() {
 }
 
 void PrintUsage() {
-  std::printf("lpd: robust point-set denoising through line processes (Wei et al. 2023)\n\n");
+  std::printf("lpd %s: robust point-set denoising through line processes (Wei et al. 2023)\n\n",
+              LPD_GIT_REVISION);
   for (const auto& [name, command] : Commands()) {
     std::printf("  %-40s %s\n", command.usage, command.summary);
   }

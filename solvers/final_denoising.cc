@@ -47,7 +47,7 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
   std::vector<int> votes(n, 0), voters(n, 0);
   for (int j = 0; j < n; ++j) {
     for (int a = 0; a <= k; ++a) {
-      const int i = a == 0 ? j : graph.NeighborsOf(j)[a - 1];
+      const int i = graph.FittingPoint(j, a);
       votes[i] += v.l(j, a) < options.outlier_line_threshold;
       ++voters[i];
     }

@@ -7,10 +7,9 @@ namespace lpd::solvers {
 void LocalPlaneSystem(const energy::Problem& problem, const energy::EnergyParameters& parameters,
                       const energy::Variables& v, int i, Eigen::Matrix4d* a,
                       Eigen::Vector4d* b) {
-  const int* neighbors = problem.graph.NeighborsOf(i);
   Eigen::Matrix4d scatter = Eigen::Matrix4d::Zero();
   for (int col = 0; col <= problem.k(); ++col) {
-    const int j = col == 0 ? i : neighbors[col - 1];
+    const int j = problem.graph.FittingPoint(i, col);
     Eigen::Vector4d q;
     q << problem.points[j], 1.0;
     scatter.selfadjointView<Eigen::Lower>().rankUpdate(q, v.l(i, col));

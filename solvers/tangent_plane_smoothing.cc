@@ -1,7 +1,6 @@
 #include "solvers/tangent_plane_smoothing.h"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 
 namespace lpd::solvers {
