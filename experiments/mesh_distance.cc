@@ -1,6 +1,7 @@
 #include "experiments/mesh_distance.h"
 
 #include <cmath>
+#include <fstream>
 #include <stdexcept>
 
 #include <CGAL/AABB_traits.h>
@@ -27,6 +28,10 @@ struct MeshDistance::Tree {
 };
 
 MeshDistance::MeshDistance(const std::string& mesh_path) : tree_(std::make_unique<Tree>()) {
+  // Checked here so the error names the file (CGAL's reader prints its own unnamed message).
+  if (!std::ifstream(mesh_path)) {
+    throw std::runtime_error(mesh_path + ": cannot open mesh file (missing or unreadable)");
+  }
   std::vector<CgalPoint> vertices;
   std::vector<std::vector<std::size_t>> polygons;
   if (!CGAL::IO::read_polygon_soup(mesh_path, vertices, polygons) || vertices.empty()) {
