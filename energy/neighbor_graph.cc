@@ -4,26 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-#include <nanoflann.hpp>
+#include "energy/point_kd_tree.h"
 
 namespace lpd::energy {
-namespace {
-
-// nanoflann dataset adaptor over a PointList.
-struct PointListAdaptor {
-  const PointList& points;
-  size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(size_t index, size_t dim) const { return points[index][dim]; }
-  template <class BoundingBox>
-  bool kdtree_get_bbox(BoundingBox&) const { return false; }
-};
-
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<double, PointListAdaptor>, PointListAdaptor, 3, int>;
-
-constexpr int kKdTreeLeafSize = 16;
-
-}  // namespace
 
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads) {
   if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
@@ -34,7 +17,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
                                 std::to_string(n));
   }
   PointListAdaptor adaptor{points};
-  KdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(kKdTreeLeafSize));
+  L2PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(kKdTreeLeafSize));
   tree.buildIndex();
 
   NeighborGraph graph;

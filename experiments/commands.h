@@ -11,6 +11,8 @@ namespace lpd::experiments {
 int RunDenoiseCommand(const std::vector<std::string>& arguments);
 int RunMetricsCommand(const std::vector<std::string>& arguments);
 int RunBenchCommand(const std::vector<std::string>& arguments);
+int RunNoiseCommand(const std::vector<std::string>& arguments);
+int RunSweepCommand(const std::vector<std::string>& arguments);
 
 }  // namespace lpd::experiments
 

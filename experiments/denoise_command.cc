@@ -3,23 +3,22 @@
 #include <algorithm>
 #include <cstdio>
 #include <numeric>
-#include <random>
 #include <stdexcept>
 
 #include <gflags/gflags.h>
 
-#include "experiments/box_shape.h"
 #include "experiments/commands.h"
 #include "experiments/denoise_flags.h"
 #include "experiments/noise.h"
 #include "experiments/point_cloud_io.h"
+#include "experiments/shape_catalog.h"
 #include "solvers/denoise_point_set.h"
 
 DEFINE_string(output, "", "output file (.ply with normals and indicators, or .xyz); also -o");
 DEFINE_bool(overwrite, false, "replace OUTPUT if it already exists");
 DEFINE_bool(quiet, false, "do not print per-iteration progress");
 DEFINE_bool(trace, false, "print the energy per term after every block update at the end");
-DEFINE_uint64(seed, 1, "random seed of the built-in default shape and its noise");
+DEFINE_uint64(seed, 1, "random seed of generated samples (and, plus one, of their noise)");
 DEFINE_int32(default_points, 20000, "number of samples of the built-in default shape");
 DEFINE_double(default_noise, 0.005,
               "Gaussian noise of the built-in shape, as a fraction of its bounding-box diagonal");
@@ -28,21 +27,25 @@ namespace lpd::experiments {
 namespace {
 
 struct DefaultInput {
-  BoxShape shape{energy::Point3::Zero(), energy::Point3(0.5, 0.4, 0.3)};
+  ProceduralShape shape = MakeShape({"box", {}});
   energy::PointList points;
+  double diagonal = 0.0;  // of the clean samples
 };
 
 DefaultInput MakeDefaultInput() {
   if (FLAGS_default_points < 1) throw std::invalid_argument("default_points must be >= 1");
-  if (!(FLAGS_default_noise >= 0.0)) throw std::invalid_argument("default_noise must be >= 0");
   DefaultInput input;
-  std::mt19937_64 rng(FLAGS_seed);
-  input.points = input.shape.SampleSurface(FLAGS_default_points, &rng);
-  AddGaussianNoise(FLAGS_default_noise * input.shape.Diagonal(), &rng, &input.points);
+  NoiseOptions noise;
+  noise.sigma = FLAGS_default_noise;
+  noise.seed = FLAGS_seed + 1;
+  NoisyPointSet noisy =
+      ApplyNoise(input.shape.Sample(FLAGS_default_points, FLAGS_seed).points, {}, noise);
+  input.points = std::move(noisy.points);
+  input.diagonal = noisy.scale_length;
   return input;
 }
 
-double MeanDistance(const BoxShape& shape, const energy::PointList& points) {
+double MeanDistance(const ProceduralShape& shape, const energy::PointList& points) {
   double sum = 0.0;
   for (const energy::Point3& p : points) sum += shape.DistanceToSurface(p);
   return sum / static_cast<double>(points.size());
@@ -60,9 +63,10 @@ bool PrintProgress(const solvers::IterationRecord& record) {
 
 PointCloud MakeOutputCloud(const solvers::DenoiseResult& result) {
   PointCloud cloud;
-  std::vector<float> outlier, outlier_score, feature, feature_score;
+  std::vector<float> source_index, outlier, outlier_score, feature, feature_score;
   for (size_t i = 0; i < result.projected.size(); ++i) {
     if (!result.kept[i]) continue;
+    source_index.push_back(static_cast<float>(i));
     cloud.points.push_back(result.projected[i]);
     cloud.normals.push_back(result.normals[i]);
     outlier.push_back(result.indicators.is_outlier[i]);
@@ -70,7 +74,8 @@ PointCloud MakeOutputCloud(const solvers::DenoiseResult& result) {
     feature.push_back(result.indicators.is_feature[i]);
     feature_score.push_back(static_cast<float>(result.indicators.feature_score[i]));
   }
-  cloud.scalars = {{"outlier", outlier},
+  cloud.scalars = {{"source_index", source_index},
+                   {"outlier", outlier},
                    {"outlier_score", outlier_score},
                    {"feature", feature},
                    {"feature_score", feature_score}};
@@ -107,10 +112,10 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     default_input = MakeDefaultInput();
     input = default_input.points;
     std::fprintf(stderr,
-                 "no INPUT given: denoising the built-in box %.1f x %.1f x %.1f, %d points, "
-                 "Gaussian noise %.2f%% of the diagonal, seed %llu\n",
-                 default_input.shape.Size().x(), default_input.shape.Size().y(),
-                 default_input.shape.Size().z(), FLAGS_default_points, 100.0 * FLAGS_default_noise,
+                 "no INPUT given: denoising the built-in %s, %d points, Gaussian noise "
+                 "%.2f%% of the bounding-box diagonal, seed %llu\n",
+                 default_input.shape.description().c_str(), FLAGS_default_points,
+                 100.0 * FLAGS_default_noise,
                  static_cast<unsigned long long>(FLAGS_seed));
   } else {
     input = ReadPoints(arguments[0]);
@@ -133,7 +138,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
       result.num_features, result.summary.num_iterations, result.total_seconds,
       result.setup_seconds);
   if (use_default) {
-    const double diagonal = default_input.shape.Diagonal();
+    const double diagonal = default_input.diagonal;
     const double before = MeanDistance(default_input.shape, input);
     const double after = MeanDistance(default_input.shape, cloud.points);
     std::printf(

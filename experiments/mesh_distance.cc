@@ -1,13 +1,11 @@
 #include "experiments/mesh_distance.h"
 
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
 
 namespace lpd::experiments {
@@ -20,6 +18,8 @@ using TriangleIterator = std::vector<Triangle>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
 using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
+CgalPoint ToCgal(const energy::Point3& p) { return CgalPoint(p.x(), p.y(), p.z()); }
+
 }  // namespace
 
 struct MeshDistance::Tree {
@@ -27,27 +27,13 @@ struct MeshDistance::Tree {
   AabbTree tree;
 };
 
-MeshDistance::MeshDistance(const std::string& mesh_path) : tree_(std::make_unique<Tree>()) {
-  // Checked here so the error names the file (CGAL's reader prints its own unnamed message).
-  if (!std::ifstream(mesh_path)) {
-    throw std::runtime_error(mesh_path + ": cannot open mesh file (missing or unreadable)");
+MeshDistance::MeshDistance(const TriangleMesh& mesh) : tree_(std::make_unique<Tree>()) {
+  diagonal_ = energy::BoundingBoxDiagonal(mesh.vertices);
+  for (const auto& t : mesh.triangles) {
+    tree_->triangles.emplace_back(ToCgal(mesh.vertices.at(t[0])), ToCgal(mesh.vertices.at(t[1])),
+                                  ToCgal(mesh.vertices.at(t[2])));
   }
-  std::vector<CgalPoint> vertices;
-  std::vector<std::vector<std::size_t>> polygons;
-  if (!CGAL::IO::read_polygon_soup(mesh_path, vertices, polygons) || vertices.empty()) {
-    throw std::runtime_error(mesh_path + ": cannot read a triangle mesh");
-  }
-  energy::PointList corners;
-  corners.reserve(vertices.size());
-  for (const CgalPoint& v : vertices) corners.emplace_back(v.x(), v.y(), v.z());
-  diagonal_ = energy::BoundingBoxDiagonal(corners);
-  for (const auto& polygon : polygons) {
-    for (size_t c = 1; c + 1 < polygon.size(); ++c) {
-      tree_->triangles.emplace_back(vertices.at(polygon[0]), vertices.at(polygon[c]),
-                                    vertices.at(polygon[c + 1]));
-    }
-  }
-  if (tree_->triangles.empty()) throw std::runtime_error(mesh_path + ": the mesh has no faces");
+  if (tree_->triangles.empty()) throw std::runtime_error("the mesh has no faces");
   tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
   tree_->tree.build();
   tree_->tree.accelerate_distance_queries();
@@ -63,8 +49,7 @@ std::vector<double> MeshDistance::Distances(const energy::PointList& points,
   const int n = static_cast<int>(points.size());
 #pragma omp parallel for schedule(dynamic, 256) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
-    const CgalPoint query(points[i].x(), points[i].y(), points[i].z());
-    distances[i] = std::sqrt(tree_->tree.squared_distance(query));
+    distances[i] = std::sqrt(tree_->tree.squared_distance(ToCgal(points[i])));
   }
   return distances;
 }

@@ -1,7 +1,6 @@
 // lpd: exact point-to-surface distance to a triangle mesh (CGAL AABB tree).
 //
-// Kept in its own translation unit so that CGAL's headers are compiled once. The mesh is read
-// with CGAL's polygon-soup reader (OFF, OBJ, PLY, STL, ...); polygons are fan-triangulated.
+// Kept in its own translation unit so that CGAL's headers are compiled once.
 #ifndef LPD_EXPERIMENTS_MESH_DISTANCE_H_
 #define LPD_EXPERIMENTS_MESH_DISTANCE_H_
 
@@ -10,13 +9,14 @@
 #include <vector>
 
 #include "energy/normalization.h"
+#include "experiments/triangle_mesh.h"
 
 namespace lpd::experiments {
 
 class MeshDistance {
  public:
-  // Throws std::runtime_error if the mesh cannot be read or has no triangles.
-  explicit MeshDistance(const std::string& mesh_path);
+  // Throws std::runtime_error if the mesh has no triangles.
+  explicit MeshDistance(const TriangleMesh& mesh);
   ~MeshDistance();
 
   // Unsigned distance from each point to the nearest triangle, computed in parallel.

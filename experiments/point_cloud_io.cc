@@ -188,7 +188,9 @@ double ReadBinaryValue(std::istream& in, const std::string& type, bool swap) {
   return x;
 }
 
-PointList ReadPly(const std::string& path) {
+// The vertex element as a PointCloud: x, y, z; nx, ny, nz as normals when all three exist;
+// every other scalar property as a named scalar.
+PointCloud ReadPly(const std::string& path) {
   std::ifstream in = OpenForReading(path);
   std::string line;
   long number = 0;
@@ -245,7 +247,8 @@ PointList ReadPly(const std::string& path) {
   if (!header_done) Fail(path, number, "PLY header has no end_header");
   if (!has_format) Fail(path, number, "PLY header has no format line");
 
-  PointList points;
+  PointCloud cloud;
+  PointList& points = cloud.points;
   const bool swap = (format == PlyFormat::kBinaryBigEndian) == HostIsLittleEndian();
   for (const PlyElement& element : elements) {
     const bool is_vertex = element.name == "vertex";
@@ -259,6 +262,19 @@ PointList ReadPly(const std::string& path) {
     if (is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0)) {
       Fail(path, 0, "the vertex element has no x, y, z properties");
     }
+    int normal[3] = {-1, -1, -1};
+    std::vector<size_t> scalar_properties;
+    for (size_t a = 0; is_vertex && a < element.properties.size(); ++a) {
+      const PlyProperty& property = element.properties[a];
+      if (!property.count_type.empty()) continue;
+      if (property.name == "x" || property.name == "y" || property.name == "z") continue;
+      if (property.name == "nx") normal[0] = static_cast<int>(a);
+      else if (property.name == "ny") normal[1] = static_cast<int>(a);
+      else if (property.name == "nz") normal[2] = static_cast<int>(a);
+      else scalar_properties.push_back(a);
+    }
+    const bool has_normals = normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0;
+    for (size_t a : scalar_properties) cloud.scalars.push_back({element.properties[a].name, {}});
     if (is_vertex) points.reserve(element.count);
     std::vector<double> values(element.properties.size());
     for (long item = 0; item < element.count; ++item) {
@@ -306,11 +322,17 @@ PointList ReadPly(const std::string& path) {
                "vertex " + std::to_string(item) + " has a non-finite coordinate");
         }
         points.push_back(p);
+        if (has_normals) {
+          cloud.normals.emplace_back(values[normal[0]], values[normal[1]], values[normal[2]]);
+        }
+        for (size_t s = 0; s < scalar_properties.size(); ++s) {
+          cloud.scalars[s].second.push_back(static_cast<float>(values[scalar_properties[s]]));
+        }
       }
     }
     if (is_vertex) break;
   }
-  return points;
+  return cloud;
 }
 
 void WritePly(const std::string& path, const PointCloud& cloud, bool overwrite) {
@@ -318,6 +340,7 @@ void WritePly(const std::string& path, const PointCloud& cloud, bool overwrite) 
   std::ofstream& out = file.stream();
   const bool with_normals = !cloud.normals.empty();
   out << "ply\nformat binary_little_endian 1.0\ncomment written by lpd\n";
+  for (const std::string& comment : cloud.comments) out << "comment " << comment << "\n";
   out << "element vertex " << cloud.points.size() << "\n";
   out << "property double x\nproperty double y\nproperty double z\n";
   if (with_normals) out << "property float nx\nproperty float ny\nproperty float nz\n";
@@ -361,23 +384,32 @@ std::string FileExtension(const std::string& path) {
   return extension;
 }
 
-PointList ReadPoints(const std::string& path) {
+PointCloud ReadPointCloud(const std::string& path) {
   const std::string extension = FileExtension(path);
-  PointList points;
+  PointCloud cloud;
   if (extension == "xyz" || extension == "txt" || extension == "pts") {
-    points = ReadXyz(path);
+    cloud.points = ReadXyz(path);
   } else if (extension == "ply") {
-    points = ReadPly(path);
+    cloud = ReadPly(path);
   } else if (extension == "off") {
-    points = ReadOff(path);
+    cloud.points = ReadOff(path);
   } else if (extension == "obj") {
-    points = ReadObj(path);
+    cloud.points = ReadObj(path);
   } else {
     Fail(path, 0, "unknown point-cloud format '." + extension +
                       "' (expected .xyz, .txt, .pts, .ply, .off or .obj)");
   }
-  if (points.empty()) Fail(path, 0, "the file contains no points");
-  return points;
+  if (cloud.points.empty()) Fail(path, 0, "the file contains no points");
+  return cloud;
+}
+
+PointList ReadPoints(const std::string& path) { return ReadPointCloud(path).points; }
+
+const std::vector<float>* PointCloud::FindScalar(const std::string& name) const {
+  for (const auto& scalar : scalars) {
+    if (scalar.first == name) return &scalar.second;
+  }
+  return nullptr;
 }
 
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite) {

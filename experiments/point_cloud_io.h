@@ -23,9 +23,15 @@ struct PointCloud {
   energy::PointList normals;  // empty, or one per point
   // Named per-point scalar properties (e.g. "outlier", "feature_score"), one value per point.
   std::vector<std::pair<std::string, std::vector<float>>> scalars;
+  std::vector<std::string> comments;  // PLY header comments (one line each)
+
+  // The scalar property called `name`, or nullptr.
+  const std::vector<float>* FindScalar(const std::string& name) const;
 };
 
-// Throws std::runtime_error with a one-line reason on any problem.
+// Throws std::runtime_error with a one-line reason on any problem. PLY files also give their
+// normals (nx, ny, nz) and other per-vertex scalar properties; other formats give points only.
+PointCloud ReadPointCloud(const std::string& path);
 energy::PointList ReadPoints(const std::string& path);
 
 // Writes `cloud` to `path` (".ply" or ".xyz"/".txt"); throws std::runtime_error on failure.

@@ -9,7 +9,7 @@ data=${1:-${LPD_DATA:-../shared/data}}
 [ -f "$data/meshes/fandisk.off" ] || { echo "no FANDISK data in $data" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-mean() { ./build/lpd metrics "$1" --mesh="$data/meshes/fandisk.off" | awk '/divided/ {print $6}'; }
+mean() { ./build/lpd metrics "$1" --ground_truth="$data/meshes/fandisk.off" | awk '/^mean_distance/ {print $3}'; }
 echo "| noise | input | k | schedule (outer x inner) | output | reference (k=50, 5x5) | time |"
 echo "|---|---|---|---|---|---|---|"
 for noise in 0.01 0.03; do

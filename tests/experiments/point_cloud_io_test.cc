@@ -71,7 +71,7 @@ TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
   EXPECT_EQ(points[0], cloud.points[0]);
   EXPECT_EQ(points[1], cloud.points[1]);
   // An existing output is never replaced without `overwrite`, and is left intact.
-  EXPECT_THROW(WritePointCloud(path, PointCloud{{{9, 9, 9}}, {}, {}}, false), std::runtime_error);
+  EXPECT_THROW(WritePointCloud(path, PointCloud{{{9, 9, 9}}, {}, {}, {}}, false), std::runtime_error);
   EXPECT_EQ(ReadPoints(path).size(), 2u);
   const std::string xyz = (directory_ / "out.xyz").string();
   WritePointCloud(xyz, cloud, false);

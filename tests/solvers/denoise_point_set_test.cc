@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/box_shape.h"
 #include "experiments/noise.h"
+#include "experiments/shape_catalog.h"
 #include "test_problems.h"
 
 namespace lpd::solvers {
@@ -44,10 +44,11 @@ TEST(DenoisePointSet, NoisyPlaneGetsCloserToThePlane) {
 }
 
 TEST(DenoisePointSet, NoisyBoxGetsCloserToTheBox) {
-  const experiments::BoxShape box(Point3::Zero(), Point3(0.5, 0.5, 0.5));
-  std::mt19937_64 rng(5);
-  PointList input = box.SampleSurface(6000, &rng);
-  experiments::AddGaussianNoise(0.005 * box.Diagonal(), &rng, &input);
+  const experiments::ProceduralShape box = experiments::MakeShape({"cube", {}});
+  experiments::NoiseOptions noise;
+  noise.sigma = 0.005;
+  noise.seed = 5;
+  const PointList input = experiments::ApplyNoise(box.Sample(6000, 5).points, {}, noise).points;
   const DenoiseResult result = DenoisePointSet(input, FastOptions(20));
   ExpectFinite(result);
   double before = 0.0, after = 0.0;
@@ -59,13 +60,16 @@ TEST(DenoisePointSet, NoisyBoxGetsCloserToTheBox) {
 }
 
 TEST(DenoisePointSet, IndicatorsFindInjectedOutliersAndBoxEdges) {
-  const experiments::BoxShape box(Point3::Zero(), Point3(0.5, 0.5, 0.5));
-  std::mt19937_64 rng(8);
-  PointList input = box.SampleSurface(8000, &rng);
-  const double sigma = 0.002 * box.Diagonal();
-  experiments::AddGaussianNoise(sigma, &rng, &input);
-  const int num_inliers = static_cast<int>(input.size());
-  experiments::AddUniformOutliers(200, 0.05, &rng, &input);
+  const experiments::ProceduralShape box = experiments::MakeShape({"cube", {}});
+  experiments::NoiseOptions noise;
+  noise.sigma = 0.002;
+  noise.outlier_count = 200;
+  noise.seed = 8;
+  const int num_inliers = 8000;
+  const experiments::NoisyPointSet noisy =
+      experiments::ApplyNoise(box.Sample(num_inliers, 8).points, {}, noise);
+  const PointList& input = noisy.points;
+  const double sigma = noisy.sigma_absolute;
   // Outliers far from the surface (some uniform samples land on it by chance).
   std::vector<bool> is_far_outlier(input.size(), false);
   for (size_t i = num_inliers; i < input.size(); ++i) {
@@ -95,7 +99,7 @@ TEST(DenoisePointSet, IndicatorsFindInjectedOutliersAndBoxEdges) {
   const double spacing = std::sqrt(6.0 / num_inliers);
   int features = 0, features_near_edge = 0, at_edge = 0, at_edge_found = 0;
   for (int i = 0; i < num_inliers; ++i) {
-    const double to_edge = box.DistanceToEdges(input[i]);
+    const double to_edge = box.DistanceToFeatures(input[i]);
     if (result.indicators.is_feature[i]) {
       ++features;
       features_near_edge += to_edge < 3 * spacing;

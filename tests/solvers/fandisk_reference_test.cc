@@ -35,7 +35,7 @@ double MeanDistanceOverDiagonal(const std::string& noise_label) {
   for (size_t i = 0; i < input.size(); ++i) {
     if (result.kept[i]) output.push_back(result.projected[i]);
   }
-  const experiments::MeshDistance mesh(data + "/meshes/fandisk.off");
+  const experiments::MeshDistance mesh(experiments::ReadTriangleMesh(data + "/meshes/fandisk.off"));
   double sum = 0.0;
   for (double d : mesh.Distances(output, 2)) sum += d;
   return sum / output.size() / mesh.BoundingBoxDiagonal();

@@ -1,0 +1,26 @@
+// MeshGroundTruth (declared in ground_truth.h): CGAL-backed, so it lives in lpd_cgal.
+#include <sstream>
+
+#include "experiments/ground_truth.h"
+#include "experiments/mesh_distance.h"
+#include "experiments/triangle_mesh.h"
+
+namespace lpd::experiments {
+
+GroundTruth MeshGroundTruth(const std::string& mesh_path, int num_samples, uint64_t seed) {
+  const TriangleMesh mesh = ReadTriangleMesh(mesh_path);
+  auto distance = std::make_shared<const MeshDistance>(mesh);
+  GroundTruth truth;
+  std::ostringstream description;
+  description << mesh_path << " (" << mesh.triangles.size() << " triangles), " << num_samples
+              << " samples, seed " << seed;
+  truth.description = description.str();
+  truth.samples = SampleTriangleMesh(mesh, num_samples, seed).points;
+  truth.diagonal = distance->BoundingBoxDiagonal();
+  truth.surface_distances = [distance](const energy::PointList& points, int num_threads) {
+    return distance->Distances(points, num_threads);
+  };
+  return truth;
+}
+
+}  // namespace lpd::experiments
