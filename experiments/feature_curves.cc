@@ -1,8 +1,6 @@
 #include "experiments/feature_curves.h"
 
 #include <algorithm>
-
-#include <Eigen/Geometry>
 #include <cmath>
 
 #include "experiments/angle_range.h"

@@ -1,8 +1,6 @@
 #include "experiments/surface_patches.h"
 
 #include <algorithm>
-
-#include <Eigen/Geometry>
 #include <cmath>
 #include <stdexcept>
 

@@ -1,8 +1,6 @@
 #include "experiments/triangle_mesh.h"
 
 #include <random>
-
-#include <Eigen/Geometry>
 #include <stdexcept>
 
 namespace lpd::experiments {
