@@ -1,8 +1,9 @@
 #include "experiments/denoise_flags.h"
 
-#include <cmath>
 #include <stdexcept>
 #include <thread>
+
+#include "experiments/denoise_parameters.h"
 
 // ---- neighbourhoods and energy (Eq. 5, Table 2) ----
 DEFINE_int32(k, 20, "number of nearest neighbours |N(i)| (paper: 20; 50-150 for heavy noise)");
@@ -40,35 +41,17 @@ namespace lpd::experiments {
 
 solvers::DenoiseOptions DenoiseOptionsFromFlags() {
   solvers::DenoiseOptions options;
-  options.problem.k = FLAGS_k;
-  auto& minimizer = options.minimizer;
-  minimizer.energy.lambda = FLAGS_lambda;
-  minimizer.energy.eta = FLAGS_eta;
-  minimizer.energy.mu_l = FLAGS_mu_l;
-  minimizer.energy.mu_m = FLAGS_mu_m;
+  for (const std::string& name : DenoiseParameterNames()) {
+    SetDenoiseParameter(name, gflags::GetCommandLineFlagInfoOrDie(name.c_str()).current_value,
+                        &options);
+  }
   if (!gflags::GetCommandLineFlagInfoOrDie("mu_m_deg").is_default) {
     if (!gflags::GetCommandLineFlagInfoOrDie("mu_m").is_default) {
       throw std::invalid_argument("give either --mu_m or --mu_m_deg, not both");
     }
-    if (!(FLAGS_mu_m_deg > 0.0 && FLAGS_mu_m_deg < 180.0)) {
-      throw std::invalid_argument("mu_m_deg must be in (0, 180), got " +
-                                  std::to_string(FLAGS_mu_m_deg));
-    }
-    minimizer.energy.mu_m = 1.0 - std::cos(FLAGS_mu_m_deg * M_PI / 180.0);
+    SetDenoiseParameter("mu_m_deg", std::to_string(FLAGS_mu_m_deg), &options);
   }
-  minimizer.max_iterations = FLAGS_max_iters;
-  minimizer.inner_iterations = FLAGS_inner_iters;
-  minimizer.energy_tolerance = FLAGS_energy_tolerance;
-  minimizer.linear_solver.relative_tolerance = FLAGS_linear_tolerance;
-  minimizer.linear_solver.max_iterations = FLAGS_max_cg_iterations;
-  minimizer.num_threads = FLAGS_threads;
-  auto& final_step = options.final_step;
-  final_step.outlier_line_threshold = FLAGS_outlier_threshold;
-  final_step.outlier_fraction = FLAGS_outlier_fraction;
-  final_step.feature_line_threshold = FLAGS_feature_threshold;
-  final_step.feature_fraction = FLAGS_feature_fraction;
-  final_step.remove_outliers = FLAGS_remove_outliers;
-  final_step.max_removed_fraction = FLAGS_max_removed_fraction;
+  options.minimizer.num_threads = FLAGS_threads;
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   return options;

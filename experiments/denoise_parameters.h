@@ -1,0 +1,28 @@
+// lpd: the denoiser's tunable parameters by name, shared by the command-line flags of
+// `lpd denoise` / `lpd bench` and the method grids of sweep configs, so that both spell and
+// check every parameter the same way.
+#ifndef LPD_EXPERIMENTS_DENOISE_PARAMETERS_H_
+#define LPD_EXPERIMENTS_DENOISE_PARAMETERS_H_
+
+#include <string>
+#include <vector>
+
+#include "solvers/denoise_point_set.h"
+
+namespace lpd::experiments {
+
+// The parameter names, in a fixed order (the order of result columns).
+const std::vector<std::string>& DenoiseParameterNames();
+
+// Sets parameter `name` of `options` from `text`. Throws std::invalid_argument naming the
+// parameter if it is unknown or `text` is not a valid value of its type (int, number, bool).
+// "mu_m_deg" sets mu_m = 1 - cos(angle) (the reference implementation's angle form).
+void SetDenoiseParameter(const std::string& name, const std::string& text,
+                         solvers::DenoiseOptions* options);
+
+// The current value of parameter `name` as text ("mu_m_deg" gives the angle of mu_m).
+std::string GetDenoiseParameter(const std::string& name, const solvers::DenoiseOptions& options);
+
+}  // namespace lpd::experiments
+
+#endif  // LPD_EXPERIMENTS_DENOISE_PARAMETERS_H_

@@ -1,0 +1,80 @@
+#include "experiments/sweep_methods.h"
+
+#include <stdexcept>
+
+#include "experiments/denoise_parameters.h"
+#include "solvers/denoise_point_set.h"
+
+namespace lpd::experiments {
+namespace {
+
+solvers::DenoiseOptions LpdOptions(const MethodConfig& method) {
+  solvers::DenoiseOptions options;
+  for (const auto& [name, value] : method.parameters) {
+    SetDenoiseParameter(name, value.text, &options);
+  }
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  return options;
+}
+
+MethodRun RunLpd(const MethodConfig& method, const energy::PointList& input, int num_threads) {
+  solvers::DenoiseOptions options = LpdOptions(method);
+  options.minimizer.num_threads = num_threads;
+  options.minimizer.trace_blocks = false;
+  const solvers::DenoiseResult result = solvers::DenoisePointSet(input, options);
+  MethodRun run;
+  for (size_t i = 0; i < input.size(); ++i) {
+    if (result.kept[i]) run.output.push_back(result.projected[i]);
+  }
+  run.outlier_flags = result.indicators.is_outlier;
+  run.feature_flags = result.indicators.is_feature;
+  const solvers::SolverSummary& summary = result.summary;
+  run.iterations = summary.num_iterations;
+  run.final_energy = summary.final_energy.total();
+  run.seconds = result.total_seconds;
+  run.setup_seconds = result.setup_seconds;
+  for (const solvers::IterationRecord& record : summary.iterations) {
+    run.local_seconds += record.local_seconds / summary.iterations.size();
+    run.global_seconds += record.global_seconds / summary.iterations.size();
+  }
+  run.termination = solvers::TerminationTypeName(summary.termination);
+  run.note = result.removal_note;
+  return run;
+}
+
+}  // namespace
+
+const std::vector<std::string>& MethodNames() {
+  static const std::vector<std::string> names = {"none", "lpd"};
+  return names;
+}
+
+std::vector<std::pair<std::string, std::string>> EffectiveParameters(
+    const MethodConfig& method) {
+  std::vector<std::pair<std::string, std::string>> values;
+  if (method.method == "none") {
+    if (!method.parameters.empty()) {
+      throw std::invalid_argument("method none takes no parameters (got '" +
+                                  method.parameters.begin()->first + "')");
+    }
+  } else if (method.method == "lpd") {
+    const solvers::DenoiseOptions options = LpdOptions(method);
+    for (const std::string& name : DenoiseParameterNames()) {
+      values.emplace_back(name, GetDenoiseParameter(name, options));
+    }
+  } else {
+    throw std::invalid_argument("unknown method '" + method.method + "' (known: none, lpd)");
+  }
+  return values;
+}
+
+MethodRun RunMethod(const MethodConfig& method, const energy::PointList& input, int num_threads) {
+  if (method.method == "lpd") return RunLpd(method, input, num_threads);
+  EffectiveParameters(method);  // validates
+  MethodRun run;
+  run.output = input;
+  return run;
+}
+
+}  // namespace lpd::experiments

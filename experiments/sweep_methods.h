@@ -1,0 +1,45 @@
+// lpd: the methods a sweep can run, by name, with their parameters given as text.
+//
+//   none   the noisy input unchanged (the "input" row of a table)
+//   lpd    the paper's method (DenoisePointSet); parameters as in denoise_parameters.h
+#ifndef LPD_EXPERIMENTS_SWEEP_METHODS_H_
+#define LPD_EXPERIMENTS_SWEEP_METHODS_H_
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "energy/normalization.h"
+#include "experiments/sweep_config.h"
+
+namespace lpd::experiments {
+
+struct MethodRun {
+  energy::PointList output;            // the denoised points (removed outliers left out)
+  // Per input point; empty when the method does not detect them.
+  std::vector<uint8_t> outlier_flags;
+  std::vector<uint8_t> feature_flags;
+  int iterations = 0;
+  double final_energy = NAN;
+  double seconds = 0.0;                // whole method, setup included
+  double setup_seconds = 0.0;          // normalization and k-NN graph
+  double local_seconds = 0.0;          // per outer iteration, mean
+  double global_seconds = 0.0;         // per outer iteration, mean
+  std::string termination;
+  std::string note;
+};
+
+const std::vector<std::string>& MethodNames();
+
+// Every parameter a method knows, with its effective value for `parameters` (defaults filled
+// in). Throws std::invalid_argument for an unknown method, parameter or value.
+std::vector<std::pair<std::string, std::string>> EffectiveParameters(
+    const MethodConfig& method);
+
+MethodRun RunMethod(const MethodConfig& method, const energy::PointList& input, int num_threads);
+
+}  // namespace lpd::experiments
+
+#endif  // LPD_EXPERIMENTS_SWEEP_METHODS_H_
