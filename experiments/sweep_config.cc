@@ -173,6 +173,13 @@ NoiseOptions ToNoiseOptions(const ParameterSet& noise, const std::string& config
       char* end = nullptr;
       const double number = std::strtod(value.text.c_str(), &end);
       const bool is_number = !value.text.empty() && *end == '\0';
+      if (!std::set<std::string>{"model", "sigma", "scale", "outliers", "outlier_ratio",
+                                 "outlier_margin"}
+               .count(key)) {
+        throw std::invalid_argument(
+            "unknown noise key '" + key +
+            "' (known: model, sigma, scale, outliers, outlier_ratio, outlier_margin)");
+      }
       if (key == "model") {
         options.model = ParseNoiseModel(value.text);
       } else if (key == "scale") {
@@ -186,12 +193,8 @@ NoiseOptions ToNoiseOptions(const ParameterSet& noise, const std::string& config
         options.outlier_count = static_cast<int>(number);
       } else if (key == "outlier_ratio") {
         options.outlier_ratio = number;
-      } else if (key == "outlier_margin") {
-        options.outlier_margin = number;
       } else {
-        throw std::invalid_argument(
-            "unknown noise key '" + key +
-            "' (known: model, sigma, scale, outliers, outlier_ratio, outlier_margin)");
+        options.outlier_margin = number;
       }
     } catch (const std::invalid_argument& error) {
       Fail(config_path, value.line, error.what());

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# lpd noise / metrics / sweep from the command line:
+# - bad input gives one stderr line, a non-zero exit and no output;
+# - outlier labels written by `lpd noise` survive denoise and are scored by `lpd metrics`;
+# - configs/smoke.yaml runs and its CSV has one row per cell with finite metrics.
+# Usage: cli_experiments_test.sh PATH_TO_LPD PATH_TO_SMOKE_CONFIG
+set -u
+lpd=$(realpath "$1")
+smoke=$(realpath "$2")
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_error NAME COMMAND ARGS...: fails with exactly one stderr line, leaves nothing.
+expect_error() {
+  local name=$1; shift
+  local before=$failures
+  mkdir -p "$dir/$name"
+  (cd "$dir/$name" && "$lpd" "$@" >stdout 2>stderr)
+  local code=$?
+  local lines
+  lines=$(wc -l <"$dir/$name/stderr")
+  [ "$code" -ne 0 ] || fail "$name: exit code 0"
+  [ "$lines" -eq 1 ] || fail "$name: $lines stderr lines: $(cat "$dir/$name/stderr")"
+  local left
+  left=$(ls "$dir/$name" | grep -vE '^(stdout|stderr)$')
+  [ -z "$left" ] || fail "$name: left behind: $left"
+  [ "$failures" -eq "$before" ] && echo "ok   $name: $(cat "$dir/$name/stderr")"
+}
+
+printf 'name: x\ndatasets: [\n' >"$dir/broken.yaml"
+printf 'name: x\ndatasets:\n  - shape: cube\nmethods:\n  - method: lpd\n    lamda: 2\n' >"$dir/typo.yaml"
+expect_error sweep_missing_config sweep "$dir/none.yaml"
+expect_error sweep_broken_yaml sweep "$dir/broken.yaml"
+expect_error sweep_unknown_key sweep "$dir/typo.yaml"
+expect_error noise_no_source noise -o out.ply
+expect_error noise_two_sources noise --shape=cube --mesh=x.off -o out.ply
+expect_error noise_bad_shape noise --shape=cone:apex_angle=200 -o out.ply
+expect_error noise_bad_model noise --shape=cube --noise_model=pink -o out.ply
+expect_error noise_negative_sigma noise --shape=cube --sigma=-1 -o out.ply
+expect_error metrics_no_ground_truth metrics "$dir/none.ply"
+expect_error metrics_bad_shape metrics "$dir/none.ply" --ground_truth=shape:teapot
+
+# Labels survive: 100 labelled outliers are all accounted for (found + missed = 100).
+"$lpd" noise --shape=cube --points=6000 --sigma=0.002 --outliers=100 -o "$dir/noisy.ply" >/dev/null ||
+  fail "lpd noise failed"
+"$lpd" denoise "$dir/noisy.ply" -o "$dir/out.ply" --quiet --mu_l=4.2e-5 >/dev/null 2>&1 ||
+  fail "lpd denoise failed"
+"$lpd" metrics "$dir/out.ply" --ground_truth=shape:cube --input="$dir/noisy.ply" >"$dir/metrics.txt" ||
+  fail "lpd metrics failed: $(cat "$dir/metrics.txt")"
+line=$(grep '^outlier detection' "$dir/metrics.txt")
+found=$(echo "$line" | sed -E 's/.*true ([0-9]+).*/\1/')
+missed=$(echo "$line" | sed -E 's/.*missed ([0-9]+).*/\1/')
+[ "$((found + missed))" -eq 100 ] || fail "outlier labels lost: $line"
+[ "$found" -ge 50 ] || fail "outlier recall too low: $line"
+echo "ok   labels survive: $line"
+
+# The smoke sweep: one row per cell, every metric present and finite, resumable.
+if ! "$lpd" sweep "$smoke" --results_dir="$dir/smoke" >"$dir/sweep.txt" 2>"$dir/sweep.err"; then
+  fail "smoke sweep failed: $(tail -3 "$dir/sweep.err")"
+fi
+cells=$(sed -E -n 's/^sweep [^:]+: ([0-9]+) cells.*/\1/p' "$dir/sweep.txt")
+rows=$(($(wc -l <"$dir/smoke/results.csv") - 1))
+[ -n "$cells" ] && [ "$rows" -eq "$cells" ] || fail "smoke: $rows CSV rows for ${cells:-?} cells"
+bad=$(awk -F, 'NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+  { split("mse mcd snr_db mean_distance_normalized seconds", names, " ");
+    for (i in names) { v = $col[names[i]]; if (v == "" || v ~ /nan|inf/) print "row " NR-1 ": " names[i] "=" v } }' \
+  "$dir/smoke/results.csv")
+[ -z "$bad" ] || fail "smoke: missing or non-finite metrics: $bad"
+"$lpd" sweep "$smoke" --results_dir="$dir/smoke" >"$dir/sweep2.txt" 2>/dev/null
+grep -q " 0 run, $cells skipped" "$dir/sweep2.txt" || fail "smoke rerun did not skip: $(cat "$dir/sweep2.txt")"
+echo "ok   smoke sweep: $rows rows, all metrics finite, rerun skipped every cell"
+
+[ "$failures" -eq 0 ] && echo "all experiment CLI checks passed"
+exit "$failures"

@@ -1,0 +1,140 @@
+// Sweep configs: grids expand as cartesian products, errors name the file and line, results
+// round-trip through JSON, and a rerun skips finished cells.
+#include "experiments/sweep_config.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "experiments/sweep_results.h"
+#include "experiments/sweep_runner.h"
+
+namespace lpd::experiments {
+namespace {
+
+std::string WriteConfig(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name + ".yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The message of the exception LoadSweepConfig throws for `text` ("" if none).
+std::string LoadError(const std::string& text) {
+  const std::string path = WriteConfig("bad", text);
+  try {
+    LoadSweepConfig(path);
+  } catch (const std::runtime_error& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind(path + ":", 0), 0u) << "the error names the file: " << message;
+    return message.substr(path.size());
+  }
+  return "";
+}
+
+const char* kValid = R"(name: tiny
+datasets:
+  - shape: cube
+    points: 500
+  - shape: cone:apex_angle=40
+    points: 500
+noise:
+  - sigma: [0.01, 0.02, 0.03]
+    outliers: [0, 10]
+methods:
+  - method: none
+  - method: lpd
+    k: [8, 12]
+    lambda: [1, 2]
+    max_iters: 1
+)";
+
+TEST(SweepConfig, GridsExpandAsCartesianProducts) {
+  const SweepConfig config = LoadSweepConfig(WriteConfig("tiny", kValid));
+  EXPECT_EQ(config.name, "tiny");
+  ASSERT_EQ(config.datasets.size(), 2u);
+  EXPECT_EQ(config.datasets[1].name, "cone:apex_angle=40");
+  EXPECT_EQ(config.noise.size(), 6u);    // 3 sigmas x 2 outlier counts
+  EXPECT_EQ(config.methods.size(), 5u);  // none + 2 k x 2 lambda
+  const std::vector<SweepCell> cells = ExpandCells(config);
+  EXPECT_EQ(cells.size(), 2u * 6u * 5u);
+  std::set<std::string> ids;
+  for (const SweepCell& cell : cells) ids.insert(cell.id);
+  EXPECT_EQ(ids.size(), cells.size()) << "cell ids are unique";
+}
+
+TEST(SweepConfig, ErrorsNameTheLineAndTheKey) {
+  EXPECT_EQ(LoadError("name: x\ndatasets: [\n"), ":3: invalid YAML: end of sequence flow not found");
+  EXPECT_NE(LoadError("name: x\ncolour: red\n").find(":2: unknown key 'colour' in the config"),
+            std::string::npos);
+  const std::string base = "datasets:\n  - shape: cube\nmethods:\n  - method: lpd\n";
+  EXPECT_NE(LoadError(base + "    kk: 3\n").find(":5: unknown parameter 'kk' of method lpd"),
+            std::string::npos);
+  EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: parameter k: 'x' is not a number"),
+            std::string::npos);
+  EXPECT_NE(LoadError("datasets:\n  - shape: teapot\nmethods:\n  - method: none\n")
+                .find(":2: unknown shape 'teapot'"),
+            std::string::npos);
+  EXPECT_NE(LoadError("datasets:\n  - file: /no/such.xyz\nmethods:\n  - method: none\n")
+                .find(":2: file not found: /no/such.xyz"),
+            std::string::npos);
+  EXPECT_NE(LoadError("datasets:\n  - shape: cube\nnoise:\n  - sigma: 0.1\n    modle: normal\n"
+                      "methods:\n  - method: none\n")
+                .find(":5: unknown noise key 'modle'"),
+            std::string::npos);
+  EXPECT_NE(LoadError("datasets:\n  - shape: cube\nmethods:\n  - method: magic\n")
+                .find(":4: unknown method 'magic'"),
+            std::string::npos);
+  EXPECT_NE(LoadError("datasets: []\nmethods:\n  - method: none\n")
+                .find(":1: 'datasets' must be a non-empty list"),
+            std::string::npos);
+}
+
+TEST(SweepResults, RecordsRoundTripThroughJson) {
+  ResultRecord record;
+  record.Add("cell_id", std::string("abc"));
+  record.Add("text", std::string("a \"quoted\", comma"));
+  record.Add("number", 1.25e-7);
+  record.Add("missing", NAN);
+  record.Add("count", 42L);
+  const ResultRecord back = ResultRecord::FromJson(record.ToJson());
+  EXPECT_EQ(back.fields(), record.fields());
+  EXPECT_EQ(back.ToJson(), record.ToJson());
+}
+
+TEST(SweepRunner, ARerunSkipsFinishedCellsAndKeepsTheRows) {
+  const std::string config_path = WriteConfig("resume", R"(name: resume
+ground_truth_samples: 5000
+datasets:
+  - shape: sphere
+    points: 400
+noise:
+  - sigma: [0.005, 0.01]
+methods:
+  - method: none
+  - method: lpd
+    k: 8
+    max_iters: 1
+)");
+  const std::string directory = ::testing::TempDir() + "/resume_results";
+  std::filesystem::remove_all(directory);
+  SweepRunOptions options;
+  options.results_directory = directory;
+  const SweepConfig config = LoadSweepConfig(config_path);
+  const SweepRunSummary first = RunSweep(config, options);
+  EXPECT_EQ(first.num_cells, 4);
+  EXPECT_EQ(first.num_run, 4);
+  EXPECT_EQ(first.num_failed, 0);
+  const SweepRunSummary second = RunSweep(config, options);
+  EXPECT_EQ(second.num_run, 0);
+  EXPECT_EQ(second.num_skipped, 4);
+  // The CSV has a header and one row per cell.
+  std::ifstream csv(first.csv_path);
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, 5);
+}
+
+}  // namespace
+}  // namespace lpd::experiments
