@@ -99,9 +99,6 @@ ResultRecord ResultRecord::FromJson(const std::string& line) {
 
 ResultStore::ResultStore(const std::string& directory, std::vector<std::string> csv_columns)
     : directory_(directory), columns_(std::move(csv_columns)) {
-  std::error_code error;
-  std::filesystem::create_directories(directory_, error);
-  if (error) throw std::runtime_error(directory_ + ": cannot create directory: " + error.message());
   std::ifstream in(jsonl_path());
   std::string line;
   long number = 0;
@@ -130,6 +127,9 @@ bool ResultStore::Contains(const std::string& cell_id) const {
 
 void ResultStore::Append(const ResultRecord& record) {
   std::lock_guard<std::mutex> lock(mutex_);
+  std::error_code error;
+  std::filesystem::create_directories(directory_, error);
+  if (error) throw std::runtime_error(directory_ + ": cannot create directory: " + error.message());
   {
     std::ofstream out(jsonl_path(), std::ios::app);
     out << record.ToJson() << "\n";

@@ -33,7 +33,7 @@ class ResultRecord {
 
 class ResultStore {
  public:
-  // Opens (creating the directory) and reads the records already in `directory`.
+  // Reads the records already in `directory`; the directory is created by the first Append.
   // `csv_columns` fixes the CSV layout.
   ResultStore(const std::string& directory, std::vector<std::string> csv_columns);
 

@@ -1,0 +1,281 @@
+#!/usr/bin/env python3
+"""Turns sweep results into the paper's tables (Markdown) and plots (PNG).
+
+    python3 paper_figures/make_all.py [--results DIR] [--out DIR]
+
+Reads DIR/<config name>/results.csv as written by `lpd sweep configs/<config>.yaml` and
+writes OUT/<config name>.md (and .png where a plot helps). A config without results is
+skipped with a message. Needs only Debian's python3 and python3-matplotlib.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+# Paper, Table 3 (6-core Xeon W-2133), seconds per iteration: local step, global step.
+PAPER_TABLE3 = {
+    ("bunny_25k", "20"): ("KITTEN 24,956", 0.192, 0.508),
+    ("bunny_25k", "50"): ("KITTEN 24,956", 0.254, 0.769),
+    ("bunny_25k", "100"): ("KITTEN 24,956", 0.452, 1.062),
+    ("accessory_50k", "20"): ("ACCESSORY 50,000", 0.232, 1.074),
+    ("accessory_50k", "50"): ("ACCESSORY 50,000", 0.375, 2.002),
+    ("accessory_50k", "100"): ("ACCESSORY 50,000", 0.610, 3.136),
+    ("bunny_100k", "20"): ("ARMADILLO 99,416", 0.399, 1.857),
+    ("bunny_100k", "50"): ("ARMADILLO 99,416", 0.680, 2.976),
+    ("bunny_100k", "100"): ("ARMADILLO 99,416", 1.132, 5.065),
+}
+
+
+def number(row, key):
+    text = row.get(key, "")
+    return float(text) if text not in ("", None) else math.nan
+
+
+def fmt(value, scale=1.0, digits=3):
+    if value is None or math.isnan(value):
+        return "-"
+    return f"{value / scale:.{digits}f}"
+
+
+def natural(text):
+    """Sort key that orders "k=20" before "k=100"."""
+    return [float(part) if re.fullmatch(r"[0-9.]+(e-?[0-9]+)?", part) else part
+            for part in re.split(r"([0-9.]+(?:e-?[0-9]+)?)", text) if part]
+
+
+def label(row):
+    parameters = row["method_parameters"]
+    return row["method"] + (f" ({parameters})" if parameters else "")
+
+
+def noise_label(row):
+    if row["noise_model"] == "as given":
+        return "as given"
+    text = f"{row['noise_model']} {100 * number(row, 'noise_sigma'):g}% of {row['noise_scale']}"
+    outliers = row.get("num_outliers", "0")
+    if outliers not in ("", "0"):
+        text += f" + {outliers} outliers"
+    return text
+
+
+def mean_over_repetitions(rows, keys):
+    """Averages `keys` over rows that differ only by repetition."""
+    groups = defaultdict(list)
+    for row in rows:
+        groups[(row["dataset"], noise_label(row), label(row))].append(row)
+    merged = []
+    for group in groups.values():
+        row = dict(group[0])
+        for key in keys:
+            values = [number(r, key) for r in group]
+            row[key] = str(sum(values) / len(values))
+        row["repetitions"] = str(len(group))
+        merged.append(row)
+    return merged
+
+
+def read(results, name):
+    path = os.path.join(results, name, "results.csv")
+    if not os.path.exists(path):
+        print(f"skip {name}: no results in {path} (run: build/lpd sweep configs/{name}.yaml)")
+        return None
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    metric_keys = ["mse_normalized", "mcd_normalized", "snr_db", "mean_distance_normalized",
+                   "outlier_precision", "outlier_recall", "feature_precision",
+                   "feature_recall", "seconds", "local_seconds_per_iteration",
+                   "global_seconds_per_iteration", "num_output"]
+    return mean_over_repetitions(rows, metric_keys)
+
+
+def header(rows, title, config):
+    machine = rows[0].get("machine", "?") if rows else "?"
+    revision = rows[0].get("git_revision", "?") if rows else "?"
+    return (f"# {title}\n\nFrom `build/lpd sweep configs/{config}.yaml` (lpd {revision}, "
+            f"{machine}). MSE in units of 1e-5 and MCD, mean distance in 1e-3, all divided by "
+            f"the bounding-box diagonal (squared for MSE); SNR in dB.\n\n")
+
+
+def table(columns, body):
+    lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+    lines += ["| " + " | ".join(row) + " |" for row in body]
+    return "\n".join(lines) + "\n"
+
+
+def write(out, name, text):
+    path = os.path.join(out, name + ".md")
+    with open(path, "w") as f:
+        f.write(text)
+    print(f"wrote {path}")
+
+
+def save_plot(out, name, figure):
+    path = os.path.join(out, name + ".png")
+    figure.savefig(path, dpi=120, bbox_inches="tight")
+    plt.close(figure)
+    print(f"wrote {path}")
+
+
+def best_per_method(rows, key="mse_normalized"):
+    """For every (dataset, noise, method) the grid point with the lowest `key`."""
+    best = {}
+    for row in rows:
+        group = (row["dataset"], noise_label(row), row["method"])
+        if group not in best or number(row, key) < number(best[group], key):
+            best[group] = row
+    return best
+
+
+def table1(results, out):
+    rows = read(results, "table1_comparison")
+    if rows is None:
+        return
+    best = best_per_method(rows)
+    methods = sorted({row["method"] for row in rows}, key=lambda m: (m != "none", m))
+    settings = sorted({(row["dataset"], noise_label(row)) for row in rows})
+    columns = ["model", "noise"]
+    for method in methods:
+        columns += [f"{method} MSE", f"{method} MCD", f"{method} SNR", f"{method} mean dist"]
+    columns += ["best", "lpd parameters"]
+    body = []
+    for dataset, noise in settings:
+        line = [dataset, noise]
+        scores = {}
+        for method in methods:
+            row = best.get((dataset, noise, method))
+            if row is None:
+                line += ["-"] * 4
+                continue
+            scores[method] = number(row, "mse_normalized")
+            line += [fmt(number(row, "mse_normalized"), 1e-5),
+                     fmt(number(row, "mcd_normalized"), 1e-3),
+                     fmt(number(row, "snr_db"), 1, 2),
+                     fmt(number(row, "mean_distance_normalized"), 1e-3)]
+        line.append(min(scores, key=scores.get) if scores else "-")
+        lpd = best.get((dataset, noise, "lpd"))
+        line.append(lpd["method_parameters"] if lpd else "-")
+        body.append(line)
+    text = header(rows, "Table 1 style comparison (best grid point per method, by MSE)",
+                  "table1_comparison")
+    text += table(columns, body)
+    text += ("\n`none` is the noisy input. 'best' is the method with the lowest MSE on the "
+             "row. Baselines (CGAL bilateral, jet, WLOP) are added by their own issue.\n")
+    write(out, "table1_comparison", text)
+
+
+def table2(results, out):
+    rows = read(results, "table2_parameters")
+    if rows is None:
+        return
+    text = header(rows, "Table 2 style parameter study (mean distance / diagonal, 1e-3)",
+                  "table2_parameters")
+    for dataset in sorted({row["dataset"] for row in rows}):
+        subset = [row for row in rows if row["dataset"] == dataset]
+        ks = sorted({int(row["k"]) for row in subset})
+        lambdas = sorted({float(row["lambda"]) for row in subset})
+        cell = {(int(r["k"]), float(r["lambda"])): r for r in subset}
+        best = min(subset, key=lambda r: number(r, "mse_normalized"))
+        text += (f"\n## {dataset}\n\nBest by MSE: k = {best['k']}, lambda = {best['lambda']} "
+                 f"(MSE {fmt(number(best, 'mse_normalized'), 1e-5)}e-5, mean distance "
+                 f"{fmt(number(best, 'mean_distance_normalized'), 1e-3)}e-3).\n\n")
+        body = [[str(k)] + [fmt(number(cell[(k, lam)], "mean_distance_normalized"), 1e-3)
+                            if (k, lam) in cell else "-" for lam in lambdas] for k in ks]
+        text += table(["k \\ lambda"] + [f"{lam:g}" for lam in lambdas], body)
+    write(out, "table2_parameters", text)
+
+
+def table3(results, out):
+    rows = read(results, "table3_timings")
+    if rows is None:
+        return
+    body = []
+    for row in sorted(rows, key=lambda r: (int(r["num_input"]), int(r["k"]))):
+        local = number(row, "local_seconds_per_iteration")
+        global_ = number(row, "global_seconds_per_iteration")
+        paper = PAPER_TABLE3.get((row["dataset"], row["k"]))
+        body.append([row["dataset"], row["num_input"], row["k"], fmt(local), fmt(global_),
+                     fmt(local + global_),
+                     f"{paper[0]}: {paper[1]:.3f} / {paper[2]:.3f}" if paper else "-"])
+    text = header(rows, "Table 3 style timings (seconds per outer iteration)", "table3_timings")
+    text += f"Threads per run: {rows[0].get('threads', '?')}.\n\n"
+    text += table(["model", "n", "k", "local (Eqs. 10+6)", "global (Eqs. 9+7+8)", "total",
+                   "paper, 6 cores: local / global"], body)
+    write(out, "table3_timings", text)
+
+
+def series(results, out, name, title, x_key, x_label, metrics, group=lambda r: r["dataset"]):
+    """A table with one row per (group, x) and a column group per method; one plot per group
+    of the first metric against x. `metrics` holds (column title, key, scale, digits)."""
+    rows = read(results, name)
+    if rows is None:
+        return
+    methods = sorted({label(row) for row in rows},
+                     key=lambda m: (not m.startswith("none"), natural(m)))
+    keyed = {(group(row), x_key(row), label(row)): row for row in rows}
+    settings = sorted({(group(row), x_key(row)) for row in rows})
+    columns = ["model", x_label]
+    for method in methods:
+        columns += [f"{method} {short}" for short, _, _, _ in metrics]
+    body = []
+    for dataset, x in settings:
+        line = [dataset, f"{x:g}"]
+        for method in methods:
+            row = keyed.get((dataset, x, method))
+            line += [fmt(number(row, key), scale, digits) if row else "-"
+                     for _, key, scale, digits in metrics]
+        body.append(line)
+    text = header(rows, title, name) + table(columns, body)
+    write(out, name, text)
+    datasets = sorted({dataset for dataset, _ in settings})
+    figure, axes = plt.subplots(1, len(datasets), figsize=(5 * len(datasets), 3.6), squeeze=False)
+    short, key, scale, _ = metrics[0]
+    for axis, dataset in zip(axes[0], datasets):
+        for method in methods:
+            xs = sorted(x for d, x in settings if d == dataset and (d, x, method) in keyed)
+            ys = [number(keyed[(dataset, x, method)], key) / scale for x in xs]
+            axis.plot(xs, ys, marker="o", label=method)
+        axis.set_title(dataset)
+        axis.set_xlabel(x_label)
+        axis.set_ylabel(short)
+        axis.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=7)
+    save_plot(out, name, figure)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parser.add_argument("--results", default=os.path.join(root, "results"))
+    parser.add_argument("--out", default=os.path.join(root, "paper_figures", "out"))
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    table1(args.results, args.out)
+    table2(args.results, args.out)
+    table3(args.results, args.out)
+    quality = [("MSE (1e-5)", "mse_normalized", 1e-5, 3),
+               ("mean dist (1e-3)", "mean_distance_normalized", 1e-3, 3)]
+    series(args.results, args.out, "fig12_outliers", "Fig. 12 style robustness to outliers",
+           lambda r: int(r["num_outliers"]), "outliers",
+           quality + [("outlier precision", "outlier_precision", 1, 3),
+                      ("outlier recall", "outlier_recall", 1, 3),
+                      ("points out", "num_output", 1, 0)])
+    series(args.results, args.out, "fig13_noise_levels", "Fig. 13 style noise levels",
+           lambda r: 100 * number(r, "noise_sigma"), "sigma (% of FPS diameter)", quality)
+    series(args.results, args.out, "fig17_cones", "Fig. 17 style cones",
+           lambda r: float(r["dataset"].split("=")[-1]), "apex angle (degrees)",
+           quality + [("feature precision", "feature_precision", 1, 3),
+                      ("feature recall", "feature_recall", 1, 3)],
+           group=lambda r: "cone")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
