@@ -40,7 +40,6 @@ expect_error noise_bad_shape noise --shape=cone:apex_angle=200 -o out.ply
 expect_error noise_bad_model noise --shape=cube --noise_model=pink -o out.ply
 expect_error noise_negative_sigma noise --shape=cube --sigma=-1 -o out.ply
 expect_error metrics_no_ground_truth metrics "$dir/none.ply"
-expect_error metrics_bad_shape metrics "$dir/none.ply" --ground_truth=shape:teapot
 
 # Labels survive: 100 labelled outliers are all accounted for (found + missed = 100).
 "$lpd" noise --shape=cube --points=6000 --sigma=0.002 --outliers=100 -o "$dir/noisy.ply" >/dev/null ||
@@ -49,6 +48,8 @@ expect_error metrics_bad_shape metrics "$dir/none.ply" --ground_truth=shape:teap
   fail "lpd denoise failed"
 "$lpd" metrics "$dir/out.ply" --ground_truth=shape:cube --input="$dir/noisy.ply" >"$dir/metrics.txt" ||
   fail "lpd metrics failed: $(cat "$dir/metrics.txt")"
+expect_error metrics_bad_shape metrics "$dir/noisy.ply" --ground_truth=shape:teapot
+expect_error metrics_missing_mesh metrics "$dir/noisy.ply" --ground_truth="$dir/none.off"
 line=$(grep '^outlier detection' "$dir/metrics.txt")
 found=$(echo "$line" | sed -E 's/.*true ([0-9]+).*/\1/')
 missed=$(echo "$line" | sed -E 's/.*missed ([0-9]+).*/\1/')
