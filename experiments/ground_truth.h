@@ -14,6 +14,7 @@
 
 #include "energy/normalization.h"
 #include "experiments/procedural_shape.h"
+#include "experiments/triangle_mesh.h"
 
 namespace lpd::experiments {
 
@@ -40,9 +41,11 @@ GroundTruth ShapeGroundTruth(std::shared_ptr<const ProceduralShape> shape,
 // A clean point set as the ground truth (no exact surface: nearest-point distances only).
 GroundTruth PointSetGroundTruth(energy::PointList points, const std::string& description);
 
-// A triangle mesh: dense area-uniform samples plus exact distances with CGAL's AABB tree.
-// Implemented in mesh_ground_truth.cc (library lpd_cgal). Throws naming the file on error.
-GroundTruth MeshGroundTruth(const std::string& mesh_path, int num_samples = kGroundTruthSamples,
+// A triangle mesh (read with ReadTriangleMesh; `name` says where it came from): dense
+// area-uniform samples plus exact distances with CGAL's AABB tree. Implemented in
+// mesh_ground_truth.cc (library lpd_cgal).
+GroundTruth MeshGroundTruth(const TriangleMesh& mesh, const std::string& name,
+                            int num_samples = kGroundTruthSamples,
                             uint64_t seed = kGroundTruthSeed);
 
 }  // namespace lpd::experiments

@@ -7,6 +7,7 @@
 
 #include "experiments/point_cloud_io.h"
 #include "experiments/shape_catalog.h"
+#include "experiments/triangle_mesh.h"
 
 namespace lpd::experiments {
 namespace {
@@ -38,7 +39,7 @@ GroundTruth LoadGroundTruth(const std::string& source, int num_samples, uint64_t
   const std::string extension = FileExtension(source);
   if (extension == "off" || extension == "obj" || extension == "stl" ||
       (extension == "ply" && PlyHasFaces(source))) {
-    return MeshGroundTruth(source, num_samples, seed);
+    return MeshGroundTruth(ReadTriangleMesh(source), source, num_samples, seed);
   }
   return PointSetGroundTruth(ReadPoints(source), source + " (clean point set)");
 }

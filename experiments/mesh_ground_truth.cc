@@ -3,16 +3,15 @@
 
 #include "experiments/ground_truth.h"
 #include "experiments/mesh_distance.h"
-#include "experiments/triangle_mesh.h"
 
 namespace lpd::experiments {
 
-GroundTruth MeshGroundTruth(const std::string& mesh_path, int num_samples, uint64_t seed) {
-  const TriangleMesh mesh = ReadTriangleMesh(mesh_path);
+GroundTruth MeshGroundTruth(const TriangleMesh& mesh, const std::string& name, int num_samples,
+                            uint64_t seed) {
   auto distance = std::make_shared<const MeshDistance>(mesh);
   GroundTruth truth;
   std::ostringstream description;
-  description << mesh_path << " (" << mesh.triangles.size() << " triangles), " << num_samples
+  description << name << " (" << mesh.triangles.size() << " triangles), " << num_samples
               << " samples, seed " << seed;
   truth.description = description.str();
   truth.samples = SampleTriangleMesh(mesh, num_samples, seed).points;

@@ -52,7 +52,7 @@ LoadedDataset LoadDataset(const DatasetConfig& dataset, const SweepConfig& confi
   } else if (!dataset.mesh.empty()) {
     loaded.mesh = std::make_unique<TriangleMesh>(ReadTriangleMesh(dataset.mesh));
     loaded.truth = std::make_unique<GroundTruth>(
-        MeshGroundTruth(dataset.mesh, config.ground_truth_samples));
+        MeshGroundTruth(*loaded.mesh, dataset.mesh, config.ground_truth_samples));
   } else {
     loaded.file_points = ReadPoints(dataset.file);
     if (!dataset.ground_truth.empty()) {
@@ -103,7 +103,7 @@ void AddDetection(const std::string& prefix, const DetectionScore& score, Result
 
 ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
                      const LoadedDataset& loaded, int num_threads,
-                     const SweepRunOptions& options) {
+                     const SweepRunOptions& options, const std::string& machine) {
   const DatasetConfig& dataset = config.datasets[cell.dataset];
   const MethodConfig& method = config.methods[cell.method];
   const CellInput input = MakeInput(config, cell, loaded);
@@ -162,7 +162,7 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
   record.Add("threads", static_cast<long>(num_threads));
   record.Add("seed", static_cast<long>(config.seed));
   record.Add("git_revision", options.git_revision);
-  record.Add("machine", MachineDescription());
+  record.Add("machine", machine);
   const std::time_t now = std::time(nullptr);
   char stamp[32];
   std::strftime(stamp, sizeof(stamp), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
@@ -280,6 +280,7 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
   const int threads = config.threads_per_cell > 0
                           ? config.threads_per_cell
                           : std::max(1, options.num_threads / workers);
+  const std::string machine = MachineDescription();
   std::atomic<size_t> next{0};
   std::atomic<int> run_count{0}, failed{0};
   const auto work = [&]() {
@@ -287,7 +288,7 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
       const SweepCell& cell = *pending[p];
       try {
         const ResultRecord record =
-            RunCell(config, cell, datasets[cell.dataset], threads, options);
+            RunCell(config, cell, datasets[cell.dataset], threads, options, machine);
         store.Append(record);
         const int done = ++run_count;
         report("[" + std::to_string(done) + "/" + std::to_string(pending.size()) + "] " +

@@ -2,13 +2,8 @@
 # lpd denoise on bad input: one error line on stderr, non-zero exit, no output file left.
 # Degenerate but valid inputs (collinear, coplanar, duplicates) give finite output.
 # Usage: cli_bad_input_test.sh PATH_TO_LPD
-set -u
 lpd=$1
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/cli_test_lib.sh"
 
 # expect_error NAME ARGS...: the run must fail with exactly one stderr line and no output.
 expect_error() {
@@ -86,5 +81,4 @@ fi
 # Output equal to input is refused.
 "$lpd" denoise "$dir/good.xyz" -o "$dir/good.xyz" --overwrite >/dev/null 2>&1 && fail "input overwritten"
 
-[ "$failures" -eq 0 ] && echo "all CLI checks passed"
-exit "$failures"
+finish "CLI checks"

@@ -4,13 +4,9 @@
 # - outlier labels written by `lpd noise` survive denoise and are scored by `lpd metrics`;
 # - configs/smoke.yaml runs and its CSV has one row per cell with finite metrics.
 # Usage: cli_experiments_test.sh PATH_TO_LPD PATH_TO_SMOKE_CONFIG
-set -u
 lpd=$(realpath "$1")
 smoke=$(realpath "$2")
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/cli_test_lib.sh"
 
 # expect_error NAME COMMAND ARGS...: fails with exactly one stderr line, leaves nothing.
 expect_error() {
@@ -73,5 +69,4 @@ bad=$(awk -F, 'NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
 grep -q " 0 run, $cells skipped" "$dir/sweep2.txt" || fail "smoke rerun did not skip: $(cat "$dir/sweep2.txt")"
 echo "ok   smoke sweep: $rows rows, all metrics finite, rerun skipped every cell"
 
-[ "$failures" -eq 0 ] && echo "all experiment CLI checks passed"
-exit "$failures"
+finish "experiment CLI checks"
