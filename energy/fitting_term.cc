@@ -1,5 +1,13 @@
 #include "energy/fitting_term.h"
 
+#include <vector>
+
+#include <ceres/loss_function.h>
+#include <ceres/problem.h>
+
+#include "energy/geman_mcclure_loss.h"
+#include "energy/plane_residuals.h"
+
 namespace lpd::energy {
 
 double FittingTerm::Evaluate(const Variables& v) const {
@@ -28,6 +36,22 @@ void FittingTerm::UpdateLineProcesses(Variables* v) const {
     for (int a = 0; a < columns; ++a) {
       const double r = Residual(h, problem_.graph.FittingPoint(i, a));
       v->l(i, a) = penalty_.OptimalLineProcess(r * r);  // Eq. (6)
+    }
+  }
+}
+
+void FittingTerm::AddResiduals(Variables* v, ceres::Problem* problem) const {
+  const int n = problem_.num_points();
+  const int columns = problem_.k() + 1;
+  // One distance function per data point q_j, shared by every plane that fits it.
+  std::vector<PlaneDistanceResidual*> distance(n);
+  for (int j = 0; j < n; ++j) distance[j] = new PlaneDistanceResidual(problem_.points[j]);
+  for (int i = 0; i < n; ++i) {
+    ceres::LossFunction* loss = new ceres::ScaledLoss(new GemanMcClureLoss(penalty_.mu()),
+                                                      problem_.alpha[i], ceres::TAKE_OWNERSHIP);
+    for (int a = 0; a < columns; ++a) {
+      problem->AddResidualBlock(distance[problem_.graph.FittingPoint(i, a)], loss,
+                                v->h.data() + 4 * i);
     }
   }
 }

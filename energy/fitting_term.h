@@ -9,6 +9,10 @@
 #include "energy/problem.h"
 #include "energy/variables.h"
 
+namespace ceres {
+class Problem;
+}  // namespace ceres
+
 namespace lpd::energy {
 
 class FittingTerm {
@@ -21,6 +25,11 @@ class FittingTerm {
 
   // l_ij = (mu_l / (mu_l + (h_i^T q_j)^2))^2 for all i, j (Eq. 6).
   void UpdateLineProcesses(Variables* v) const;
+
+  // Adds one residual h_i^T q_j per i and j in N(i) u {i}, with loss alpha_i rho_mu_l, on the
+  // parameter blocks v->h (rows). `problem` must own its cost and loss functions (the Ceres
+  // default) and must not outlive `v`.
+  void AddResiduals(Variables* v, ceres::Problem* problem) const;
 
   // h^T q_j, the algebraic distance of p_j to the plane h.
   double Residual(const Eigen::Vector4d& h, int j) const {

@@ -11,6 +11,10 @@
 #include "energy/problem.h"
 #include "energy/variables.h"
 
+namespace ceres {
+class Problem;
+}  // namespace ceres
+
 namespace lpd::energy {
 
 class SmoothnessTerm {
@@ -26,6 +30,12 @@ class SmoothnessTerm {
 
   // s_ij = t_i^T t_j / t_j^T t_j (Eq. 8); left unchanged where t_j = 0 (any s is optimal).
   void UpdateOrientations(Variables* v) const;
+
+  // Adds one residual per pair of M with loss lambda beta_ij rho_mu_m, on the parameter
+  // blocks v->t (rows) and, if `optimize_orientations`, v->s (one scalar block per pair):
+  // f = t_i - s_ij t_j. Otherwise s_ij is held at its optimum (Eq. 8) inside the residual.
+  // `problem` must own its cost and loss functions and must not outlive `v`.
+  void AddResiduals(Variables* v, bool optimize_orientations, ceres::Problem* problem) const;
 
   // |t_i - s_ij t_j|^2 for pair `p`.
   double SquaredDifference(const Variables& v, int p) const {

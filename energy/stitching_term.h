@@ -7,6 +7,10 @@
 #include "energy/problem.h"
 #include "energy/variables.h"
 
+namespace ceres {
+class Problem;
+}  // namespace ceres
+
 namespace lpd::energy {
 
 class StitchingTerm {
@@ -16,6 +20,10 @@ class StitchingTerm {
 
   // E_stitch at `v` (uses v.h and v.t), including the factor eta.
   double Evaluate(const Variables& v) const;
+
+  // Adds one residual sqrt(eta alpha_i) (h_i - t_i) per point, without loss, on the parameter
+  // blocks v->h and v->t (rows). `problem` must own its cost functions and not outlive `v`.
+  void AddResiduals(Variables* v, ceres::Problem* problem) const;
 
  private:
   const Problem& problem_;

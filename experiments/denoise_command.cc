@@ -123,7 +123,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
 
   const solvers::DenoiseResult result = solvers::DenoisePointSet(
       input, options,
-      FLAGS_quiet ? solvers::AlternatingMinimizer::IterationCallback() : PrintProgress);
+      FLAGS_quiet ? solvers::IterationCallback() : PrintProgress);
   if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
 
   const PointCloud cloud = MakeOutputCloud(result);

@@ -16,6 +16,13 @@ DEFINE_double(mu_m, 0.13, "selectivity of the smoothness line processes (paper: 
 DEFINE_double(mu_m_deg, 0.0,
               "if > 0, sets mu_m = 1 - cos(angle) from an angle in degrees (30 gives 0.134); "
               "cannot be combined with --mu_m");
+// ---- solver ----
+DEFINE_string(solver, "alternating",
+              "alternating (Alg. 1, the paper's method) or ceres (the joint-solve baseline: "
+              "Eq. 5 minimized over H, T, S at once by Ceres)");
+DEFINE_string(initialization, "auto",
+              "start of the minimization: zero (Alg. 1: H = T = 0), plane_fit (PCA planes, "
+              "T = H), or auto (zero for alternating, plane_fit for ceres)");
 // ---- schedule (Alg. 1) ----
 DEFINE_int32(max_iters, 5,
              "maximum outer iterations of Alg. 1 (reference implementation: 5; more "
@@ -26,6 +33,16 @@ DEFINE_double(energy_tolerance, 0.01,
               "iterations (paper: 0.01); 0 runs all iterations");
 DEFINE_double(linear_tolerance, 1e-6, "relative residual at which the T solve (Eq. 9) stops");
 DEFINE_int32(max_cg_iterations, 2000, "conjugate-gradient iterations per T solve, at most");
+// ---- joint solve (--solver=ceres) ----
+DEFINE_string(ceres_linear_solver, "sparse_schur",
+              "sparse_schur, iterative_schur, sparse_normal_cholesky or cgnr");
+DEFINE_int32(ceres_max_iters, 100, "Levenberg-Marquardt iterations at most");
+DEFINE_double(ceres_function_tolerance, 1e-6, "stop when the cost changes by less (relative)");
+DEFINE_double(ceres_gradient_tolerance, 1e-10, "stop when the max-norm gradient is below this");
+DEFINE_double(ceres_parameter_tolerance, 1e-8, "stop when the step is below this (relative)");
+DEFINE_string(ceres_orientations, "blocks",
+              "s_ij as parameter blocks (blocks) or held at their optimum t_i.t_j/|t_j|^2, "
+              "Eq. 8 (closed_form)");
 DEFINE_int32(threads, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
              "worker threads (default: all cores)");
 // ---- final denoising (Sec. 3.4) ----
@@ -41,9 +58,16 @@ namespace lpd::experiments {
 
 solvers::DenoiseOptions DenoiseOptionsFromFlags() {
   solvers::DenoiseOptions options;
+  if (!solvers::ParseSolver(FLAGS_solver, &options.solver)) {
+    throw std::invalid_argument("--solver must be alternating or ceres, got '" + FLAGS_solver +
+                                "'");
+  }
   for (const std::string& name : DenoiseParameterNames()) {
-    SetDenoiseParameter(name, gflags::GetCommandLineFlagInfoOrDie(name.c_str()).current_value,
-                        &options);
+    const gflags::CommandLineFlagInfo flag = gflags::GetCommandLineFlagInfoOrDie(name.c_str());
+    if (!flag.is_default && !DenoiseParameterApplies(name, options.solver)) {
+      throw std::invalid_argument("--" + name + " has no effect with --solver=" + FLAGS_solver);
+    }
+    SetDenoiseParameter(name, flag.current_value, &options);
   }
   if (!gflags::GetCommandLineFlagInfoOrDie("mu_m_deg").is_default) {
     if (!gflags::GetCommandLineFlagInfoOrDie("mu_m").is_default) {

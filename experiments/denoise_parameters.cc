@@ -5,44 +5,139 @@
 #include <functional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace lpd::experiments {
 namespace {
 
 using solvers::DenoiseOptions;
+using solvers::Solver;
 
-// One tunable value of DenoiseOptions: exactly one of the three accessors is set.
+// Which solvers a parameter means something to.
+enum class Scope { kBoth, kAlternating, kCeres };
+
+// One tunable value of DenoiseOptions: exactly one kind of accessor is set.
 struct Parameter {
   std::string name;
+  Scope scope = Scope::kBoth;
   std::function<int&(DenoiseOptions&)> integer;
   std::function<double&(DenoiseOptions&)> number;
   std::function<bool&(DenoiseOptions&)> flag;
+  // A named choice: `set_choice` throws std::invalid_argument on an unknown name.
+  std::function<std::string(const DenoiseOptions&)> get_choice;
+  std::function<void(const std::string&, DenoiseOptions&)> set_choice;
 };
+
+Parameter Named(std::string name, Scope scope) {
+  Parameter parameter;
+  parameter.name = std::move(name);
+  parameter.scope = scope;
+  return parameter;
+}
+
+Parameter Integer(std::string name, Scope scope, std::function<int&(DenoiseOptions&)> field) {
+  Parameter parameter = Named(std::move(name), scope);
+  parameter.integer = std::move(field);
+  return parameter;
+}
+
+Parameter Number(std::string name, Scope scope, std::function<double&(DenoiseOptions&)> field) {
+  Parameter parameter = Named(std::move(name), scope);
+  parameter.number = std::move(field);
+  return parameter;
+}
+
+Parameter Flag(std::string name, Scope scope, std::function<bool&(DenoiseOptions&)> field) {
+  Parameter parameter = Named(std::move(name), scope);
+  parameter.flag = std::move(field);
+  return parameter;
+}
+
+Parameter Choice(std::string name, Scope scope,
+                 std::function<std::string(const DenoiseOptions&)> get,
+                 std::function<void(const std::string&, DenoiseOptions&)> set) {
+  Parameter parameter = Named(std::move(name), scope);
+  parameter.get_choice = std::move(get);
+  parameter.set_choice = std::move(set);
+  return parameter;
+}
+
+[[noreturn]] void ThrowUnknownChoice(const std::string& name, const std::string& text,
+                                     const std::string& choices) {
+  throw std::invalid_argument("parameter " + name + ": '" + text + "' is not one of " + choices);
+}
 
 const std::vector<Parameter>& Parameters() {
   using O = DenoiseOptions;
+  constexpr Scope kBoth = Scope::kBoth;
+  constexpr Scope kAlternating = Scope::kAlternating;
+  constexpr Scope kCeres = Scope::kCeres;
   static const std::vector<Parameter> parameters = {
-      {"k", [](O& o) -> int& { return o.problem.k; }, {}, {}},
-      {"lambda", {}, [](O& o) -> double& { return o.minimizer.energy.lambda; }, {}},
-      {"eta", {}, [](O& o) -> double& { return o.minimizer.energy.eta; }, {}},
-      {"mu_l", {}, [](O& o) -> double& { return o.minimizer.energy.mu_l; }, {}},
-      {"mu_m", {}, [](O& o) -> double& { return o.minimizer.energy.mu_m; }, {}},
-      {"max_iters", [](O& o) -> int& { return o.minimizer.max_iterations; }, {}, {}},
-      {"inner_iters", [](O& o) -> int& { return o.minimizer.inner_iterations; }, {}, {}},
-      {"energy_tolerance", {}, [](O& o) -> double& { return o.minimizer.energy_tolerance; }, {}},
-      {"linear_tolerance", {},
-       [](O& o) -> double& { return o.minimizer.linear_solver.relative_tolerance; }, {}},
-      {"max_cg_iterations", [](O& o) -> int& { return o.minimizer.linear_solver.max_iterations; },
-       {}, {}},
-      {"outlier_threshold", {},
-       [](O& o) -> double& { return o.final_step.outlier_line_threshold; }, {}},
-      {"outlier_fraction", {}, [](O& o) -> double& { return o.final_step.outlier_fraction; }, {}},
-      {"feature_threshold", {},
-       [](O& o) -> double& { return o.final_step.feature_line_threshold; }, {}},
-      {"feature_fraction", {}, [](O& o) -> double& { return o.final_step.feature_fraction; }, {}},
-      {"remove_outliers", {}, {}, [](O& o) -> bool& { return o.final_step.remove_outliers; }},
-      {"max_removed_fraction", {},
-       [](O& o) -> double& { return o.final_step.max_removed_fraction; }, {}},
+      Integer("k", kBoth, [](O& o) -> int& { return o.problem.k; }),
+      Number("lambda", kBoth, [](O& o) -> double& { return o.minimizer.energy.lambda; }),
+      Number("eta", kBoth, [](O& o) -> double& { return o.minimizer.energy.eta; }),
+      Number("mu_l", kBoth, [](O& o) -> double& { return o.minimizer.energy.mu_l; }),
+      Number("mu_m", kBoth, [](O& o) -> double& { return o.minimizer.energy.mu_m; }),
+      Choice(
+          "initialization", kBoth,
+          [](const O& o) { return solvers::InitializationName(o.EffectiveInitialization()); },
+          [](const std::string& text, O& o) {
+            solvers::Initialization initialization;
+            if (text == "auto") {
+              o.initialization.reset();
+            } else if (solvers::ParseInitialization(text, &initialization)) {
+              o.initialization = initialization;
+            } else {
+              ThrowUnknownChoice("initialization", text, "auto, zero, plane_fit");
+            }
+          }),
+      Integer("max_iters", kAlternating, [](O& o) -> int& { return o.minimizer.max_iterations; }),
+      Integer("inner_iters", kAlternating,
+              [](O& o) -> int& { return o.minimizer.inner_iterations; }),
+      Number("energy_tolerance", kAlternating,
+             [](O& o) -> double& { return o.minimizer.energy_tolerance; }),
+      Number("linear_tolerance", kAlternating,
+             [](O& o) -> double& { return o.minimizer.linear_solver.relative_tolerance; }),
+      Integer("max_cg_iterations", kAlternating,
+              [](O& o) -> int& { return o.minimizer.linear_solver.max_iterations; }),
+      Choice(
+          "ceres_orientations", kCeres,
+          [](const O& o) {
+            return std::string(o.joint.optimize_orientations ? "blocks" : "closed_form");
+          },
+          [](const std::string& text, O& o) {
+            if (text != "blocks" && text != "closed_form") {
+              ThrowUnknownChoice("ceres_orientations", text, "blocks, closed_form");
+            }
+            o.joint.optimize_orientations = text == "blocks";
+          }),
+      Choice(
+          "ceres_linear_solver", kCeres,
+          [](const O& o) { return solvers::JointLinearSolverName(o.joint.linear_solver_type); },
+          [](const std::string& text, O& o) {
+            if (!solvers::ParseJointLinearSolver(text, &o.joint.linear_solver_type)) {
+              ThrowUnknownChoice("ceres_linear_solver", text,
+                                 "sparse_schur, iterative_schur, sparse_normal_cholesky, cgnr");
+            }
+          }),
+      Integer("ceres_max_iters", kCeres, [](O& o) -> int& { return o.joint.max_iterations; }),
+      Number("ceres_function_tolerance", kCeres,
+             [](O& o) -> double& { return o.joint.function_tolerance; }),
+      Number("ceres_gradient_tolerance", kCeres,
+             [](O& o) -> double& { return o.joint.gradient_tolerance; }),
+      Number("ceres_parameter_tolerance", kCeres,
+             [](O& o) -> double& { return o.joint.parameter_tolerance; }),
+      Number("outlier_threshold", kBoth,
+             [](O& o) -> double& { return o.final_step.outlier_line_threshold; }),
+      Number("outlier_fraction", kBoth,
+             [](O& o) -> double& { return o.final_step.outlier_fraction; }),
+      Number("feature_threshold", kBoth,
+             [](O& o) -> double& { return o.final_step.feature_line_threshold; }),
+      Number("feature_fraction", kBoth,
+             [](O& o) -> double& { return o.final_step.feature_fraction; }),
+      Flag("remove_outliers", kBoth, [](O& o) -> bool& { return o.final_step.remove_outliers; }),
+      Number("max_removed_fraction", kBoth,
+             [](O& o) -> double& { return o.final_step.max_removed_fraction; }),
   };
   return parameters;
 }
@@ -51,7 +146,7 @@ const Parameter& Find(const std::string& name) {
   for (const Parameter& parameter : Parameters()) {
     if (parameter.name == name) return parameter;
   }
-  throw std::invalid_argument("unknown parameter '" + name + "' of method lpd");
+  throw std::invalid_argument("unknown parameter '" + name + "'");
 }
 
 double ParseNumber(const std::string& name, const std::string& text) {
@@ -81,6 +176,13 @@ const std::vector<std::string>& DenoiseParameterNames() {
   return names;
 }
 
+bool DenoiseParameterApplies(const std::string& name, Solver solver) {
+  if (name == "mu_m_deg") return true;
+  const Scope scope = Find(name).scope;
+  return scope == Scope::kBoth ||
+         scope == (solver == Solver::kCeres ? Scope::kCeres : Scope::kAlternating);
+}
+
 void SetDenoiseParameter(const std::string& name, const std::string& text,
                          DenoiseOptions* options) {
   if (name == "mu_m_deg") {
@@ -92,6 +194,10 @@ void SetDenoiseParameter(const std::string& name, const std::string& text,
     return;
   }
   const Parameter& parameter = Find(name);
+  if (parameter.set_choice) {
+    parameter.set_choice(text, *options);
+    return;
+  }
   if (parameter.flag) {
     if (text == "true" || text == "1") {
       parameter.flag(*options) = true;
@@ -118,6 +224,7 @@ std::string GetDenoiseParameter(const std::string& name, const DenoiseOptions& o
     return Text(std::acos(1.0 - copy.minimizer.energy.mu_m) * 180.0 / M_PI);
   }
   const Parameter& parameter = Find(name);
+  if (parameter.get_choice) return parameter.get_choice(copy);
   if (parameter.flag) return parameter.flag(copy) ? "true" : "false";
   if (parameter.number) return Text(parameter.number(copy));
   return std::to_string(parameter.integer(copy));

@@ -14,8 +14,13 @@ namespace lpd::experiments {
 // The parameter names, in a fixed order (the order of result columns).
 const std::vector<std::string>& DenoiseParameterNames();
 
+// Whether parameter `name` has any effect with `solver` (the schedule of Alg. 1 does not
+// apply to the joint solve, nor the ceres_* options to Alg. 1). Throws for an unknown name.
+bool DenoiseParameterApplies(const std::string& name, solvers::Solver solver);
+
 // Sets parameter `name` of `options` from `text`. Throws std::invalid_argument naming the
-// parameter if it is unknown or `text` is not a valid value of its type (int, number, bool).
+// parameter if it is unknown or `text` is not a valid value of its type (int, number, bool,
+// or one of a parameter's named choices).
 // "mu_m_deg" sets mu_m = 1 - cos(angle) (the reference implementation's angle form).
 void SetDenoiseParameter(const std::string& name, const std::string& text,
                          solvers::DenoiseOptions* options);

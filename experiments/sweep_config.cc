@@ -274,7 +274,7 @@ SweepConfig LoadSweepConfig(const std::string& path) {
   }
   for (const YAML::Node& node : methods) {
     if (!node.IsMap() || !node["method"]) {
-      Fail(path, Line(node), "a method entry needs 'method: NAME' (none or lpd)");
+      Fail(path, Line(node), "a method entry needs 'method: NAME' (none, lpd or ceres)");
     }
     const std::string method = Scalar(path, node["method"], "method");
     for (const ParameterSet& point : ExpandGrid(path, node, "method")) {

@@ -8,9 +8,26 @@
 namespace lpd::experiments {
 namespace {
 
-solvers::DenoiseOptions LpdOptions(const MethodConfig& method) {
+// The solver behind a method that runs DenoisePointSet; false for other methods.
+bool DenoiseSolver(const std::string& method, solvers::Solver* solver) {
+  if (method == "lpd") {
+    *solver = solvers::Solver::kAlternating;
+  } else if (method == "ceres") {
+    *solver = solvers::Solver::kCeres;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+solvers::DenoiseOptions DenoiseOptionsOf(const MethodConfig& method, solvers::Solver solver) {
   solvers::DenoiseOptions options;
+  options.solver = solver;
   for (const auto& [name, value] : method.parameters) {
+    if (!DenoiseParameterApplies(name, solver)) {
+      throw std::invalid_argument("parameter " + name + " does not apply to method " +
+                                  method.method);
+    }
     SetDenoiseParameter(name, value.text, &options);
   }
   std::string error;
@@ -18,8 +35,9 @@ solvers::DenoiseOptions LpdOptions(const MethodConfig& method) {
   return options;
 }
 
-MethodRun RunLpd(const MethodConfig& method, const energy::PointList& input, int num_threads) {
-  solvers::DenoiseOptions options = LpdOptions(method);
+MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
+                      const energy::PointList& input, int num_threads) {
+  solvers::DenoiseOptions options = DenoiseOptionsOf(method, solver);
   options.minimizer.num_threads = num_threads;
   options.minimizer.trace_blocks = false;
   const solvers::DenoiseResult result = solvers::DenoisePointSet(input, options);
@@ -31,7 +49,12 @@ MethodRun RunLpd(const MethodConfig& method, const energy::PointList& input, int
   run.feature_flags = result.indicators.is_feature;
   const solvers::SolverSummary& summary = result.summary;
   run.iterations = summary.num_iterations;
+  run.initial_energy = summary.initial_energy.total();
   run.final_energy = summary.final_energy.total();
+  run.energy_trace.emplace_back(0.0, run.initial_energy);
+  for (const solvers::IterationRecord& record : summary.iterations) {
+    run.energy_trace.emplace_back(record.elapsed_seconds, record.energy.total());
+  }
   run.seconds = result.total_seconds;
   run.setup_seconds = result.setup_seconds;
   for (const solvers::IterationRecord& record : summary.iterations) {
@@ -46,31 +69,36 @@ MethodRun RunLpd(const MethodConfig& method, const energy::PointList& input, int
 }  // namespace
 
 const std::vector<std::string>& MethodNames() {
-  static const std::vector<std::string> names = {"none", "lpd"};
+  static const std::vector<std::string> names = {"none", "lpd", "ceres"};
   return names;
 }
 
 std::vector<std::pair<std::string, std::string>> EffectiveParameters(
     const MethodConfig& method) {
   std::vector<std::pair<std::string, std::string>> values;
+  solvers::Solver solver;
   if (method.method == "none") {
     if (!method.parameters.empty()) {
       throw std::invalid_argument("method none takes no parameters (got '" +
                                   method.parameters.begin()->first + "')");
     }
-  } else if (method.method == "lpd") {
-    const solvers::DenoiseOptions options = LpdOptions(method);
+  } else if (DenoiseSolver(method.method, &solver)) {
+    const solvers::DenoiseOptions options = DenoiseOptionsOf(method, solver);
     for (const std::string& name : DenoiseParameterNames()) {
-      values.emplace_back(name, GetDenoiseParameter(name, options));
+      if (DenoiseParameterApplies(name, solver)) {
+        values.emplace_back(name, GetDenoiseParameter(name, options));
+      }
     }
   } else {
-    throw std::invalid_argument("unknown method '" + method.method + "' (known: none, lpd)");
+    throw std::invalid_argument("unknown method '" + method.method +
+                                "' (known: none, lpd, ceres)");
   }
   return values;
 }
 
 MethodRun RunMethod(const MethodConfig& method, const energy::PointList& input, int num_threads) {
-  if (method.method == "lpd") return RunLpd(method, input, num_threads);
+  solvers::Solver solver;
+  if (DenoiseSolver(method.method, &solver)) return RunDenoiser(method, solver, input, num_threads);
   EffectiveParameters(method);  // validates
   MethodRun run;
   run.output = input;

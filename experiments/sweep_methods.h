@@ -1,7 +1,9 @@
 // lpd: the methods a sweep can run, by name, with their parameters given as text.
 //
 //   none   the noisy input unchanged (the "input" row of a table)
-//   lpd    the paper's method (DenoisePointSet); parameters as in denoise_parameters.h
+//   lpd    the paper's method (DenoisePointSet, Alg. 1); parameters as in denoise_parameters.h
+//   ceres  the same energy minimized jointly by Ceres (the validation baseline), followed by
+//          the same final step; the parameters that apply to the joint solve
 #ifndef LPD_EXPERIMENTS_SWEEP_METHODS_H_
 #define LPD_EXPERIMENTS_SWEEP_METHODS_H_
 
@@ -22,7 +24,10 @@ struct MethodRun {
   std::vector<uint8_t> outlier_flags;
   std::vector<uint8_t> feature_flags;
   int iterations = 0;
+  double initial_energy = NAN;
   double final_energy = NAN;
+  // (elapsed seconds, total energy of Eq. 5) at the start and after every iteration.
+  std::vector<std::pair<double, double>> energy_trace;
   double seconds = 0.0;                // whole method, setup included
   double setup_seconds = 0.0;          // normalization and k-NN graph
   double local_seconds = 0.0;          // per outer iteration, mean

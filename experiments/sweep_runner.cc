@@ -101,6 +101,17 @@ void AddDetection(const std::string& prefix, const DetectionScore& score, Result
   record->Add(prefix + "_recall", score.recall());
 }
 
+// "seconds:energy" pairs separated by spaces (kept out of the CSV; plotted from the JSONL).
+std::string EnergyTraceText(const std::vector<std::pair<double, double>>& trace) {
+  std::string text;
+  char pair[64];
+  for (const auto& [seconds, energy] : trace) {
+    std::snprintf(pair, sizeof(pair), "%s%.4f:%.10e", text.empty() ? "" : " ", seconds, energy);
+    text += pair;
+  }
+  return text;
+}
+
 ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
                      const LoadedDataset& loaded, int num_threads,
                      const SweepRunOptions& options, const std::string& machine) {
@@ -152,7 +163,9 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
     record.Add("feature_band", config.feature_band);
   }
   record.Add("iterations", static_cast<long>(run.iterations));
+  record.Add("initial_energy", run.initial_energy);
   record.Add("final_energy", run.final_energy);
+  record.Add("energy_trace", EnergyTraceText(run.energy_trace));
   record.Add("termination", run.termination);
   record.Add("note", run.note);
   record.Add("seconds", run.seconds);

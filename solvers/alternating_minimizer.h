@@ -8,7 +8,6 @@
 #ifndef LPD_SOLVERS_ALTERNATING_MINIMIZER_H_
 #define LPD_SOLVERS_ALTERNATING_MINIMIZER_H_
 
-#include <functional>
 #include <string>
 
 #include "energy/energy_parameters.h"
@@ -46,9 +45,6 @@ class AlternatingMinimizer {
 
     bool IsValid(std::string* error) const;
   };
-
-  // Called after every outer iteration; returning false stops the run (USER_ABORT).
-  using IterationCallback = std::function<bool(const IterationRecord&)>;
 
   // Runs Alg. 1 from the state in `v` (use energy::InitialVariables for lines 2-5).
   static SolverSummary Minimize(const energy::Problem& problem, const Options& options,

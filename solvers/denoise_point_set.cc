@@ -4,16 +4,45 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "energy/variables.h"
 
 namespace lpd::solvers {
 
+const char* SolverName(Solver solver) {
+  return solver == Solver::kAlternating ? "alternating" : "ceres";
+}
+
+bool ParseSolver(const std::string& name, Solver* solver) {
+  for (Solver candidate : {Solver::kAlternating, Solver::kCeres}) {
+    if (name == SolverName(candidate)) {
+      *solver = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
+Initialization DenoiseOptions::EffectiveInitialization() const {
+  if (initialization) return *initialization;
+  return solver == Solver::kCeres ? Initialization::kPlaneFit : Initialization::kZero;
+}
+
 bool DenoiseOptions::IsValid(std::string* error) const {
-  return problem.IsValid(error) && minimizer.IsValid(error) && final_step.IsValid(error);
+  if (!problem.IsValid(error) || !minimizer.IsValid(error) || !final_step.IsValid(error)) {
+    return false;
+  }
+  if (solver == Solver::kCeres) {
+    if (!joint.IsValid(error)) return false;
+    if (EffectiveInitialization() == Initialization::kZero) {
+      *error = "the ceres solver cannot start from initialization zero (h_i = 0 is off the "
+               "unit sphere); use plane_fit";
+      return false;
+    }
+  }
+  return true;
 }
 
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
-                              const AlternatingMinimizer::IterationCallback& callback) {
+                              const IterationCallback& callback) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   std::string error;
@@ -24,8 +53,16 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
       energy::BuildProblem(points, options.problem, options.minimizer.num_threads);
   result.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
-  energy::Variables v = energy::InitialVariables(problem);
-  result.summary = AlternatingMinimizer::Minimize(problem, options.minimizer, &v, callback);
+  const AlternatingMinimizer::Options& minimizer = options.minimizer;
+  energy::Variables v = InitialState(problem, minimizer.energy, options.EffectiveInitialization(),
+                                     minimizer.num_threads);
+  if (options.solver == Solver::kCeres) {
+    CeresJointSolver::Options joint = options.joint;
+    joint.num_threads = minimizer.num_threads;
+    result.summary = CeresJointSolver::Minimize(problem, minimizer.energy, joint, &v, callback);
+  } else {
+    result.summary = AlternatingMinimizer::Minimize(problem, minimizer, &v, callback);
+  }
   if (!result.summary.IsSolutionUsable()) {
     throw std::runtime_error("minimization failed: " + result.summary.message);
   }

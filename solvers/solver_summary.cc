@@ -32,6 +32,18 @@ std::string SolverSummary::BriefReport() const {
 std::string SolverSummary::FullReport() const {
   std::ostringstream out;
   out << BriefReport() << "\n";
+  if (steps.empty()) {
+    out << "iter       fitting    smoothness     stitching         total   seconds  elapsed  cg\n";
+    for (const IterationRecord& record : iterations) {
+      char line[256];
+      std::snprintf(line, sizeof(line), "%4d %13.6e %13.6e %13.6e %13.6e %9.4f %8.3f %3d\n",
+                    record.iteration, record.energy.fitting, record.energy.smoothness,
+                    record.energy.stitching, record.energy.total(), record.seconds,
+                    record.elapsed_seconds, record.cg_iterations);
+      out << line;
+    }
+    return out.str();
+  }
   out << "iter inner block       fitting    smoothness     stitching         total   seconds  cg\n";
   for (const StepRecord& step : steps) {
     char line[256];

@@ -5,6 +5,7 @@
 #ifndef LPD_SOLVERS_SOLVER_SUMMARY_H_
 #define LPD_SOLVERS_SOLVER_SUMMARY_H_
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,19 +32,26 @@ struct StepRecord {
   int cg_iterations = -1;   // for "T": conjugate-gradient iterations; -1 otherwise
 };
 
-// One outer iteration of Alg. 1.
+// One outer iteration of Alg. 1, or one iteration of the joint solve.
 struct IterationRecord {
   int iteration = 0;                // from 1
   energy::EnergyBreakdown energy;   // at the end of the iteration
-  double local_seconds = 0.0;       // H and L updates (Eqs. 10, 6)
-  double global_seconds = 0.0;      // all inner (T, M, S) passes (Eqs. 9, 7, 8)
-  double seconds = 0.0;             // the whole iteration, energy evaluation included
-  int cg_iterations = 0;            // summed over the inner passes
+  double local_seconds = 0.0;       // H and L updates (Eqs. 10, 6); 0 for the joint solve
+  double global_seconds = 0.0;      // all inner (T, M, S) passes (Eqs. 9, 7, 8); 0 likewise
+  double seconds = 0.0;             // the whole iteration
+  // Since the minimization started, leaving out energy evaluations made only for the trace
+  // (the time axis of energy-versus-time comparisons).
+  double elapsed_seconds = 0.0;
+  int cg_iterations = 0;            // summed over the inner passes / linear solver iterations
 };
+
+// Called after every iteration; returning false stops the run (USER_ABORT).
+using IterationCallback = std::function<bool(const IterationRecord&)>;
 
 struct SolverSummary {
   TerminationType termination = TerminationType::kFailure;
   std::string message = "Solve was not called";
+  energy::EnergyBreakdown initial_energy;
   energy::EnergyBreakdown final_energy;
   int num_iterations = 0;
   std::vector<StepRecord> steps;
@@ -53,7 +61,8 @@ struct SolverSummary {
   bool IsSolutionUsable() const;
   // One line: termination, iterations, final energy, time.
   std::string BriefReport() const;
-  // The brief report followed by one line per block update with the per-term energies.
+  // The brief report followed by one line per block update (or, without a block trace, per
+  // iteration) with the per-term energies.
   std::string FullReport() const;
 };
 

@@ -1,0 +1,107 @@
+// The joint-solve baseline: its Ceres objective is Eq. (5) with optimal line processes, it
+// keeps h_i on the sphere and lowers the energy, and on a noisy cube it is compared with the
+// alternating driver of Alg. 1 from the same start.
+#include "solvers/ceres_joint_solver.h"
+
+#include <cmath>
+
+#include <ceres/problem.h>
+#include <gtest/gtest.h>
+
+#include "energy/energy.h"
+#include "energy/fitting_term.h"
+#include "energy/smoothness_term.h"
+#include "energy/stitching_term.h"
+#include "experiments/noise.h"
+#include "experiments/shape_catalog.h"
+#include "solvers/alternating_minimizer.h"
+#include "solvers/final_denoising.h"
+#include "solvers/initial_state.h"
+#include "test_problems.h"
+
+namespace lpd::solvers {
+namespace {
+
+// Ceres' cost 1/2 sum rho(|f|^2) with every term's residuals added, at the state in `v`.
+double CeresObjective(const energy::Problem& problem, const energy::EnergyParameters& w,
+                      bool optimize_orientations, energy::Variables* v) {
+  ceres::Problem joint;
+  energy::FittingTerm(problem, w.mu_l).AddResiduals(v, &joint);
+  energy::SmoothnessTerm(problem, w.lambda, w.mu_m).AddResiduals(v, optimize_orientations, &joint);
+  energy::StitchingTerm(problem, w.eta).AddResiduals(v, &joint);
+  double cost = 0.0;
+  EXPECT_TRUE(joint.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, nullptr));
+  return cost;
+}
+
+// Eq. (5) through the project's own terms, with L and M (and S if asked) at their closed
+// forms (Eqs. 6-8), which is what eliminating them by Eq. (3) means.
+double EnergyAtOptimalLineProcesses(const energy::Problem& problem,
+                                    const energy::EnergyParameters& w, bool optimal_orientations,
+                                    energy::Variables v) {
+  energy::FittingTerm(problem, w.mu_l).UpdateLineProcesses(&v);
+  const energy::SmoothnessTerm smoothness(problem, w.lambda, w.mu_m);
+  if (optimal_orientations) smoothness.UpdateOrientations(&v);
+  smoothness.UpdateLineProcesses(&v);
+  return energy::EvaluateEnergy(problem, w, v).total();
+}
+
+TEST(CeresJointSolver, ObjectiveIsTheEnergyWithOptimalLineProcesses) {
+  energy::ProblemOptions options;
+  options.k = 6;
+  const energy::Problem problem = energy::BuildProblem(testing::NoisySphere(200, 0.05, 3), options);
+  energy::EnergyParameters paper;  // the paper's weights, with mu_l far below the residuals
+  for (const energy::EnergyParameters& w : {testing::BalancedParameters(), paper}) {
+    for (uint64_t seed = 1; seed <= 5; ++seed) {
+      energy::Variables v = testing::RandomVariables(problem, seed);
+      for (bool blocks : {true, false}) {
+        const double own = EnergyAtOptimalLineProcesses(problem, w, !blocks, v);
+        const double ceres_cost = CeresObjective(problem, w, blocks, &v);
+        EXPECT_NEAR(ceres_cost, own, 1e-10 * own)
+            << "seed " << seed << (blocks ? " s as blocks" : " s at Eq. 8");
+      }
+    }
+  }
+}
+
+TEST(CeresJointSolver, KeepsPlanesOnTheSphereAndLowersTheEnergy) {
+  energy::ProblemOptions options;
+  options.k = 8;
+  const energy::Problem problem = energy::BuildProblem(testing::NoisySphere(400, 0.02, 4), options);
+  const energy::EnergyParameters w = testing::BalancedParameters();
+  for (bool blocks : {true, false}) {
+    energy::Variables v = InitialState(problem, w, Initialization::kPlaneFit, 2);
+    CeresJointSolver::Options joint;
+    joint.optimize_orientations = blocks;
+    joint.max_iterations = 30;
+    joint.num_threads = 2;
+    const SolverSummary summary = CeresJointSolver::Minimize(problem, w, joint, &v);
+    ASSERT_TRUE(summary.IsSolutionUsable()) << summary.message;
+    EXPECT_LT(summary.final_energy.total(), summary.initial_energy.total());
+    for (int i = 0; i < problem.num_points(); ++i) {
+      ASSERT_NEAR(v.h.row(i).norm(), 1.0, 1e-12) << "h_" << i;
+    }
+    // The summary's energy is the state's energy with the line processes it left in v.
+    EXPECT_NEAR(summary.final_energy.total(), energy::EvaluateEnergy(problem, w, v).total(),
+                1e-12 * summary.final_energy.total());
+    double previous_elapsed = 0.0;
+    for (const IterationRecord& record : summary.iterations) {
+      EXPECT_GE(record.elapsed_seconds, previous_elapsed);
+      previous_elapsed = record.elapsed_seconds;
+    }
+  }
+}
+
+TEST(CeresJointSolver, RefusesPlanesOffTheSphere) {
+  energy::ProblemOptions options;
+  options.k = 6;
+  const energy::Problem problem = energy::BuildProblem(testing::NoisySphere(100, 0.02, 5), options);
+  energy::Variables v = energy::InitialVariables(problem);  // h = 0
+  const SolverSummary summary =
+      CeresJointSolver::Minimize(problem, energy::EnergyParameters(), {}, &v);
+  EXPECT_FALSE(summary.IsSolutionUsable());
+  EXPECT_NE(summary.message.find("plane_fit"), std::string::npos) << summary.message;
+}
+
+}  // namespace
+}  // namespace lpd::solvers
