@@ -1,5 +1,6 @@
 #include "experiments/sweep_methods.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "experiments/denoise_parameters.h"
@@ -23,7 +24,11 @@ bool DenoiseSolver(const std::string& method, solvers::Solver* solver) {
 solvers::DenoiseOptions DenoiseOptionsOf(const MethodConfig& method, solvers::Solver solver) {
   solvers::DenoiseOptions options;
   options.solver = solver;
+  const std::vector<std::string>& known = DenoiseParameterNames();
   for (const auto& [name, value] : method.parameters) {
+    if (name != "mu_m_deg" && std::find(known.begin(), known.end(), name) == known.end()) {
+      throw std::invalid_argument("unknown parameter '" + name + "' of method " + method.method);
+    }
     if (!DenoiseParameterApplies(name, solver)) {
       throw std::invalid_argument("parameter " + name + " does not apply to method " +
                                   method.method);
