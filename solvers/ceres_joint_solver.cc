@@ -203,7 +203,6 @@ SolverSummary CeresJointSolver::Minimize(const energy::Problem& problem,
 
   ceres::Solver::Summary ceres_summary;
   ceres::Solve(solver_options, &joint, &ceres_summary);
-  if (getenv("LPD_DEBUG")) fprintf(stderr, "%s\n", ceres_summary.FullReport().c_str());
 
   summary.final_energy = trace.EliminatedEnergy();
   summary.termination = FromCeres(ceres_summary.termination_type);
