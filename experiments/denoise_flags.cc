@@ -40,6 +40,7 @@ DEFINE_int32(ceres_max_iters, 100, "Levenberg-Marquardt iterations at most");
 DEFINE_double(ceres_function_tolerance, 1e-6, "stop when the cost changes by less (relative)");
 DEFINE_double(ceres_gradient_tolerance, 1e-10, "stop when the max-norm gradient is below this");
 DEFINE_double(ceres_parameter_tolerance, 1e-8, "stop when the step is below this (relative)");
+DEFINE_double(ceres_max_seconds, 1e6, "wall-time budget of the joint solve");
 DEFINE_string(ceres_orientations, "blocks",
               "s_ij as parameter blocks (blocks) or held at their optimum t_i.t_j/|t_j|^2, "
               "Eq. 8 (closed_form)");

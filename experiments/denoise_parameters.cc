@@ -127,6 +127,7 @@ const std::vector<Parameter>& Parameters() {
              [](O& o) -> double& { return o.joint.gradient_tolerance; }),
       Number("ceres_parameter_tolerance", kCeres,
              [](O& o) -> double& { return o.joint.parameter_tolerance; }),
+      Number("ceres_max_seconds", kCeres, [](O& o) -> double& { return o.joint.max_seconds; }),
       Number("outlier_threshold", kBoth,
              [](O& o) -> double& { return o.final_step.outlier_line_threshold; }),
       Number("outlier_fraction", kBoth,

@@ -138,6 +138,8 @@ bool CeresJointSolver::Options::IsValid(std::string* error) const {
   } else if (!(function_tolerance >= 0.0) || !(gradient_tolerance >= 0.0) ||
              !(parameter_tolerance >= 0.0)) {
     out << "the ceres tolerances must be >= 0";
+  } else if (!(max_seconds > 0.0)) {
+    out << "ceres_max_seconds must be > 0, got " << max_seconds;
   } else if (num_threads < 1) {
     out << "threads must be >= 1, got " << num_threads;
   } else {
@@ -195,6 +197,7 @@ SolverSummary CeresJointSolver::Minimize(const energy::Problem& problem,
   solver_options.function_tolerance = options.function_tolerance;
   solver_options.gradient_tolerance = options.gradient_tolerance;
   solver_options.parameter_tolerance = options.parameter_tolerance;
+  solver_options.max_solver_time_in_seconds = options.max_seconds;
   solver_options.num_threads = threads;
   solver_options.logging_type = ceres::SILENT;
   solver_options.update_state_every_iteration = true;

@@ -35,6 +35,8 @@ class CeresJointSolver {
     double function_tolerance = 1e-6;
     double gradient_tolerance = 1e-10;
     double parameter_tolerance = 1e-8;
+    // Wall-time budget of the Ceres minimizer (NO_CONVERGENCE when it runs out).
+    double max_seconds = 1e6;
     int num_threads = 1;
 
     bool IsValid(std::string* error) const;
