@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 configs=("$@")
 if [ ${#configs[@]} -eq 0 ]; then
   configs=(table1_comparison table2_parameters table3_timings fig12_outliers fig13_noise_levels
-           fig17_cones)
+           fig17_cones solver_validation)
 fi
 for name in "${configs[@]}"; do
   echo "== $name"
