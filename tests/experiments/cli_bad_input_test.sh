@@ -19,11 +19,12 @@ expect_error() {
   echo "ok   $name: $(cat "$dir/stderr")"
 }
 
-# expect_finite NAME FILE: the run must succeed and write only finite coordinates.
+# expect_finite NAME FILE [FLAGS...]: the run must succeed and write only finite coordinates.
 expect_finite() {
   local name=$1 input=$2
+  shift 2
   local out="$dir/out_$name.xyz"
-  if ! "$lpd" denoise "$input" -o "$out" --k=8 --quiet >"$dir/stdout" 2>"$dir/stderr"; then
+  if ! "$lpd" denoise "$input" -o "$out" --k=8 --quiet "$@" >"$dir/stdout" 2>"$dir/stderr"; then
     fail "$name: failed: $(cat "$dir/stderr")"
     return
   fi
@@ -67,10 +68,20 @@ expect_error both_mu_m "$dir/good.xyz" --mu_m=0.2 --mu_m_deg=20
 expect_error unknown_flag "$dir/good.xyz" --no_such_flag=3
 expect_error bad_flag_value "$dir/good.xyz" --k=abc
 EXT=abc expect_error bad_extension "$dir/good.xyz"
+expect_error unknown_solver "$dir/good.xyz" --solver=newton
+expect_error ceres_from_zero "$dir/good.xyz" --solver=ceres --initialization=zero
+expect_error unknown_initialization "$dir/good.xyz" --initialization=random
+expect_error dense_joint_solver "$dir/good.xyz" --solver=ceres --ceres_linear_solver=dense_qr
+expect_error schedule_with_ceres "$dir/good.xyz" --solver=ceres --inner_iters=3
+expect_error ceres_flag_with_alternating "$dir/good.xyz" --ceres_max_iters=3
+expect_error zero_ceres_seconds "$dir/good.xyz" --solver=ceres --ceres_max_seconds=0
 
 expect_finite collinear "$dir/collinear.xyz"
 expect_finite coplanar "$dir/coplanar.xyz"
 expect_finite duplicates "$dir/duplicates.xyz"
+for shape in collinear coplanar duplicates; do
+  expect_finite "${shape}_ceres" "$dir/$shape.xyz" --solver=ceres
+done
 
 # An existing output file is never overwritten without --overwrite.
 echo "precious" >"$dir/keep.xyz"

@@ -30,6 +30,8 @@ printf 'name: x\ndatasets:\n  - shape: cube\nmethods:\n  - method: lpd\n    lamd
 expect_error sweep_missing_config sweep "$dir/none.yaml"
 expect_error sweep_broken_yaml sweep "$dir/broken.yaml"
 expect_error sweep_unknown_key sweep "$dir/typo.yaml"
+printf 'name: x\ndatasets:\n  - shape: cube\nmethods:\n  - method: ceres\n    inner_iters: 3\n' >"$dir/ceres_schedule.yaml"
+expect_error sweep_schedule_with_ceres sweep "$dir/ceres_schedule.yaml"
 expect_error noise_no_source noise -o out.ply
 expect_error noise_two_sources noise --shape=cube --mesh=x.off -o out.ply
 expect_error noise_bad_shape noise --shape=cone:apex_angle=200 -o out.ply
