@@ -56,15 +56,17 @@ MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
   run.iterations = summary.num_iterations;
   run.initial_energy = summary.initial_energy.total();
   run.final_energy = summary.final_energy.total();
+  run.seconds = result.total_seconds;
+  run.setup_seconds = result.setup_seconds;
   run.energy_trace.emplace_back(0.0, run.initial_energy);
   for (const solvers::IterationRecord& record : summary.iterations) {
     run.energy_trace.emplace_back(record.elapsed_seconds, record.energy.total());
-  }
-  run.seconds = result.total_seconds;
-  run.setup_seconds = result.setup_seconds;
-  for (const solvers::IterationRecord& record : summary.iterations) {
     run.local_seconds += record.local_seconds / summary.iterations.size();
     run.global_seconds += record.global_seconds / summary.iterations.size();
+  }
+  if (solver == solvers::Solver::kCeres) {  // the joint solve has no local / global steps
+    run.local_seconds = NAN;
+    run.global_seconds = NAN;
   }
   run.termination = solvers::TerminationTypeName(summary.termination);
   run.note = result.removal_note;

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-
 namespace lpd::solvers {
 
 const char* SolverName(Solver solver) {
