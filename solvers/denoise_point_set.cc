@@ -3,8 +3,22 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
+
+#include "energy/spatial_order.h"
 
 namespace lpd::solvers {
+namespace {
+
+// values[r] belongs to input point order[r]; returns them indexed by input point.
+template <typename Values>
+Values ToInputOrder(const Values& values, const std::vector<int>& order) {
+  Values input_ordered(values.size());
+  for (size_t r = 0; r < order.size(); ++r) input_ordered[order[r]] = values[r];
+  return input_ordered;
+}
+
+}  // namespace
 
 const char* SolverName(Solver solver) {
   return solver == Solver::kAlternating ? "alternating" : "ceres";
@@ -48,8 +62,13 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
 
   DenoiseResult result;
+  // The problem holds the points in Morton order (for memory locality); results are mapped
+  // back to input order at the end.
+  const std::vector<int> order = energy::MortonOrder(points);
+  energy::PointList ordered_points(points.size());
+  for (size_t r = 0; r < order.size(); ++r) ordered_points[r] = points[order[r]];
   const energy::Problem problem =
-      energy::BuildProblem(points, options.problem, options.minimizer.num_threads);
+      energy::BuildProblem(ordered_points, options.problem, options.minimizer.num_threads);
   result.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
   const AlternatingMinimizer::Options& minimizer = options.minimizer;
@@ -68,6 +87,12 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
 
   ProjectOntoTangentPlanes(problem, v, &result.projected, &result.normals);
   result.indicators = ComputeIndicators(problem, v, options.final_step);
+  for (auto* values : {&result.projected, &result.normals}) *values = ToInputOrder(*values, order);
+  PointIndicators& indicators = result.indicators;
+  indicators.outlier_score = ToInputOrder(indicators.outlier_score, order);
+  indicators.feature_score = ToInputOrder(indicators.feature_score, order);
+  indicators.is_outlier = ToInputOrder(indicators.is_outlier, order);
+  indicators.is_feature = ToInputOrder(indicators.is_feature, order);
   const int n = problem.num_points();
   for (int i = 0; i < n; ++i) {
     result.num_outliers += result.indicators.is_outlier[i];

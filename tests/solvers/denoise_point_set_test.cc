@@ -43,6 +43,19 @@ TEST(DenoisePointSet, NoisyPlaneGetsCloserToThePlane) {
   EXPECT_LT(after, 0.4 * before) << "mean |z| " << before / 3000 << " -> " << after / 3000;
 }
 
+TEST(DenoisePointSet, ResultsComeInInputOrder) {
+  // The solver works on the points in Morton order; every output must be mapped back.
+  const PointList input = testing::NoisySphere(3000, 0.01, 2);
+  const DenoiseResult result = DenoisePointSet(input, FastOptions(20));
+  ASSERT_EQ(result.projected.size(), input.size());
+  for (size_t i = 0; i < input.size(); ++i) {
+    // On the unit sphere (points 0.065 apart, 1.3 apart on average), each output stays
+    // near its own input point and its normal points along that point's radius.
+    ASSERT_LT((result.projected[i] - input[i]).norm(), 0.05) << "point " << i;
+    ASSERT_GT(std::abs(result.normals[i].dot(input[i].normalized())), 0.9) << "normal " << i;
+  }
+}
+
 TEST(DenoisePointSet, NoisyBoxGetsCloserToTheBox) {
   const experiments::ProceduralShape box = experiments::MakeShape({"cube", {}});
   experiments::NoiseOptions noise;
