@@ -17,6 +17,7 @@
 #include "energy/fitting_term.h"
 #include "energy/smoothness_term.h"
 #include "energy/stitching_term.h"
+#include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
 namespace {
@@ -108,13 +109,7 @@ class TraceCallback final : public ceres::IterationCallback {
 }  // namespace
 
 bool ParseJointLinearSolver(const std::string& name, ceres::LinearSolverType* type) {
-  for (ceres::LinearSolverType candidate : kSupportedLinearSolvers) {
-    if (name == JointLinearSolverName(candidate)) {
-      *type = candidate;
-      return true;
-    }
-  }
-  return false;
+  return ParseByName(name, kSupportedLinearSolvers, JointLinearSolverName, type);
 }
 
 std::string JointLinearSolverName(ceres::LinearSolverType type) {

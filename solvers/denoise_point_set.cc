@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "energy/spatial_order.h"
+#include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
 namespace {
@@ -25,13 +26,8 @@ const char* SolverName(Solver solver) {
 }
 
 bool ParseSolver(const std::string& name, Solver* solver) {
-  for (Solver candidate : {Solver::kAlternating, Solver::kCeres}) {
-    if (name == SolverName(candidate)) {
-      *solver = candidate;
-      return true;
-    }
-  }
-  return false;
+  constexpr Solver kSolvers[] = {Solver::kAlternating, Solver::kCeres};
+  return ParseByName(name, kSolvers, SolverName, solver);
 }
 
 Initialization DenoiseOptions::EffectiveInitialization() const {

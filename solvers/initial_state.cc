@@ -3,6 +3,7 @@
 #include "energy/fitting_term.h"
 #include "energy/smoothness_term.h"
 #include "solvers/local_plane_fit.h"
+#include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
 
@@ -11,13 +12,9 @@ const char* InitializationName(Initialization initialization) {
 }
 
 bool ParseInitialization(const std::string& name, Initialization* initialization) {
-  for (Initialization candidate : {Initialization::kZero, Initialization::kPlaneFit}) {
-    if (name == InitializationName(candidate)) {
-      *initialization = candidate;
-      return true;
-    }
-  }
-  return false;
+  constexpr Initialization kInitializations[] = {Initialization::kZero,
+                                                 Initialization::kPlaneFit};
+  return ParseByName(name, kInitializations, InitializationName, initialization);
 }
 
 energy::Variables InitialState(const energy::Problem& problem,
