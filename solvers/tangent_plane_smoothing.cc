@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include "solvers/row_sum.h"
+
 namespace lpd::solvers {
 
 using energy::PlaneField;
@@ -32,6 +34,7 @@ TangentPlaneSmoother::TangentPlaneSmoother(const energy::Problem& problem) : pro
   columns_.resize(row_offsets_[n]);
   values_.assign(row_offsets_[n], 0.0);
   diagonal_entry_.resize(n);
+  inverse_diagonal_.resize(n);
   pair_entry_.resize(2 * static_cast<size_t>(graph.num_pairs()));
   // Row i lists its pairs in increasing partner order (pairs are sorted), with the diagonal
   // placed where it belongs, so columns are sorted within every row.
@@ -76,19 +79,18 @@ void TangentPlaneSmoother::AssembleValues(const energy::EnergyParameters& parame
       values_[pair_entry_[2 * p + (i_is_first ? 0 : 1)]] = -w * s;
     }
     values_[diagonal_entry_[i]] = diagonal;
+    inverse_diagonal_[i] = 1.0 / diagonal;
   }
 }
 
-void TangentPlaneSmoother::Multiply(const PlaneField& x, int num_threads, PlaneField* y) const {
-  const int n = problem_.num_points();
-#pragma omp parallel for schedule(static) num_threads(num_threads)
-  for (int i = 0; i < n; ++i) {
-    Eigen::RowVector4d sum = Eigen::RowVector4d::Zero();
-    for (int e = row_offsets_[i]; e < row_offsets_[i + 1]; ++e) {
-      sum += values_[e] * x.row(columns_[e]);
-    }
-    y->row(i) = sum;
+void TangentPlaneSmoother::RowProduct(const double* x, int i, double* y) const {
+  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int e = row_offsets_[i]; e < row_offsets_[i + 1]; ++e) {
+    const double value = values_[e];
+    const double* x_j = x + 4 * columns_[e];
+    for (int c = 0; c < 4; ++c) sum[c] += value * x_j[c];
   }
+  for (int c = 0; c < 4; ++c) y[c] = sum[c];
 }
 
 LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& parameters,
@@ -96,44 +98,70 @@ LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& pa
                                               int num_threads, energy::Variables* v) {
   AssembleValues(parameters, *v, num_threads);
   const int n = problem_.num_points();
-  PlaneField w(n, 4);
-  Eigen::VectorXd inverse_diagonal(n);
-  for (int i = 0; i < n; ++i) {
-    w.row(i) = parameters.eta * problem_.alpha[i] * v->h.row(i);
-    inverse_diagonal[i] = 1.0 / values_[diagonal_entry_[i]];
+  for (auto* work : {&residual_, &direction_, &product_}) {
+    work->resize(4 * static_cast<size_t>(n));
   }
-  // Preconditioned CG on the four columns at once: one sparse pass per iteration.
-  PlaneField& x = v->t;
-  PlaneField r(n, 4), z(n, 4), p(n, 4), kp(n, 4);
-  Multiply(x, num_threads, &kp);
-  r = w - kp;
-  const Eigen::Array4d target =
-      options.relative_tolerance * w.colwise().norm().transpose().array().max(1e-300);
-  z = inverse_diagonal.asDiagonal() * r;
-  p = z;
-  Eigen::Array4d rz = (r.array() * z.array()).colwise().sum().transpose();
-  Eigen::Array4d residual = r.colwise().norm().transpose().array();
+  // CG on the four columns at once, all arrays row-major n x 4, in three parallel passes per
+  // iteration: K p; x, r and the dot products; the new direction. The preconditioned
+  // residual z = D^-1 r is never stored. Sums are deterministic (row_sum.h), so a run is
+  // reproducible bit for bit at a fixed thread count.
+  double* x = v->t.data();
+  double* r = residual_.data();
+  double* p = direction_.data();
+  double* kp = product_.data();
+  const double* h = v->h.data();
+  const double* inverse_diagonal = inverse_diagonal_.data();
+  using Array4 = Eigen::Array4d;
+  using Array8 = Eigen::Array<double, 8, 1>;
+  using Array12 = Eigen::Array<double, 12, 1>;
+
+  // r = W - K x, p = D^-1 r; per column the sums of r.z, |r|^2 and |W|^2.
+  const Array12 start =
+      SumOverRows(n, num_threads, Array12::Zero().eval(), [&](int i, auto* sum) {
+        const double weight = parameters.eta * problem_.alpha[i];
+        RowProduct(x, i, r + 4 * i);
+        for (int c = 0; c < 4; ++c) {
+          const double w = weight * h[4 * i + c];
+          const double r_c = w - r[4 * i + c];
+          r[4 * i + c] = r_c;
+          p[4 * i + c] = inverse_diagonal[i] * r_c;
+          (*sum)[c] += inverse_diagonal[i] * r_c * r_c;
+          (*sum)[4 + c] += r_c * r_c;
+          (*sum)[8 + c] += w * w;
+        }
+      });
+  Array4 rz = start.head<4>();
+  Array4 residual = start.segment<4>(4).sqrt();
+  const Array4 target = options.relative_tolerance * start.tail<4>().sqrt().max(1e-300);
+
   LinearSolveStats stats;
   while ((residual > target).any() && stats.iterations < options.max_iterations) {
-    Multiply(p, num_threads, &kp);
-    const Eigen::Array4d pkp = (p.array() * kp.array()).colwise().sum().transpose();
-    Eigen::Array4d step = Eigen::Array4d::Zero();
-    for (int c = 0; c < 4; ++c) {
-      if (residual[c] > target[c] && pkp[c] > 0.0) step[c] = rz[c] / pkp[c];
-    }
-    x += p * step.matrix().asDiagonal();
-    r -= kp * step.matrix().asDiagonal();
-    z = inverse_diagonal.asDiagonal() * r;
-    const Eigen::Array4d rz_next = (r.array() * z.array()).colwise().sum().transpose();
-    Eigen::Array4d momentum = Eigen::Array4d::Zero();
-    for (int c = 0; c < 4; ++c) {
-      if (step[c] != 0.0 && rz[c] > 0.0) momentum[c] = rz_next[c] / rz[c];
-    }
-    p = z + p * momentum.matrix().asDiagonal();
-    rz = rz_next;
-    residual = r.colwise().norm().transpose().array();
-    ++stats.iterations;
+    const Array4 pkp = SumOverRows(n, num_threads, Array4::Zero().eval(), [&](int i, auto* sum) {
+      RowProduct(p, i, kp + 4 * i);
+      for (int c = 0; c < 4; ++c) (*sum)[c] += p[4 * i + c] * kp[4 * i + c];
+    });
+    // Converged columns stop moving (step 0) while the others go on.
+    const Array4 step = (residual > target && pkp > 0.0).select(rz / pkp, 0.0);
     if ((step == 0.0).all()) break;
+    const Array8 sums = SumOverRows(n, num_threads, Array8::Zero().eval(), [&](int i, auto* sum) {
+      for (int c = 0; c < 4; ++c) {
+        x[4 * i + c] += step[c] * p[4 * i + c];
+        const double r_c = r[4 * i + c] - step[c] * kp[4 * i + c];
+        r[4 * i + c] = r_c;
+        (*sum)[c] += inverse_diagonal[i] * r_c * r_c;
+        (*sum)[4 + c] += r_c * r_c;
+      }
+    });
+    const Array4 momentum = (step != 0.0 && rz > 0.0).select(sums.head<4>() / rz, 0.0);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+    for (int i = 0; i < n; ++i) {
+      for (int c = 0; c < 4; ++c) {
+        p[4 * i + c] = inverse_diagonal[i] * r[4 * i + c] + momentum[c] * p[4 * i + c];
+      }
+    }
+    rz = sums.head<4>();
+    residual = sums.tail<4>().sqrt();
+    ++stats.iterations;
   }
   stats.relative_residual = (residual / (target / options.relative_tolerance)).maxCoeff();
   return stats;

@@ -5,9 +5,10 @@
 //             W = eta diag(alpha) H      (n x 4: one right-hand side per plane coordinate)
 // T is the exact minimizer of E_smooth + E_stitch over T. K's sparsity pattern (compressed
 // rows: the diagonal and both entries of every pair of M) is built once; each solve only
-// refreshes the values, then runs Jacobi-preconditioned conjugate gradients on the four
-// columns together, warm-started from the current T. CG started anywhere decreases the
-// K-norm error monotonically, so even an inexact solve never increases the energy.
+// refreshes the values, then runs Jacobi-preconditioned conjugate gradients on the four columns
+// together, warm-started from the current T, with every vector pass parallel. CG started
+// anywhere decreases the K-norm error monotonically, so even an inexact solve never
+// increases the energy.
 #ifndef LPD_SOLVERS_TANGENT_PLANE_SMOOTHING_H_
 #define LPD_SOLVERS_TANGENT_PLANE_SMOOTHING_H_
 
@@ -53,7 +54,8 @@ class TangentPlaneSmoother {
  private:
   void AssembleValues(const energy::EnergyParameters& parameters, const energy::Variables& v,
                       int num_threads);
-  void Multiply(const energy::PlaneField& x, int num_threads, energy::PlaneField* y) const;
+  // y = row i of K X, for X stored row-major with 4 columns.
+  void RowProduct(const double* x, int i, double* y) const;
 
   const energy::Problem& problem_;
   std::vector<int> row_offsets_;        // CSR row starts, size n + 1
@@ -61,6 +63,9 @@ class TangentPlaneSmoother {
   std::vector<double> values_;          // CSR values, refreshed by AssembleValues
   std::vector<int> diagonal_entry_;     // entry of K_ii per row
   std::vector<int> pair_entry_;         // entries of K_ij and K_ji per pair (2 per pair)
+  std::vector<double> inverse_diagonal_;  // 1 / K_ii, the Jacobi preconditioner
+  // CG work arrays (n x 4 each), kept between solves: residual, search direction, K times it.
+  std::vector<double> residual_, direction_, product_;
 };
 
 }  // namespace lpd::solvers
