@@ -21,7 +21,8 @@ struct NeighborGraph {
   std::vector<int> neighbors;
   // M: pairs[p] = {i, j}, i < j, sorted lexicographically.
   std::vector<std::array<int, 2>> pairs;
-  // Pairs incident to point i: incident_pairs[incident_offsets[i], incident_offsets[i + 1]).
+  // Pairs incident to point i: incident_pairs[incident_offsets[i], incident_offsets[i + 1]),
+  // in increasing order of the partner point (a consequence of the pairs' order).
   std::vector<int> incident_offsets;
   std::vector<int> incident_pairs;
 

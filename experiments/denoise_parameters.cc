@@ -101,6 +101,17 @@ const std::vector<Parameter>& Parameters() {
       Integer("max_cg_iterations", kAlternating,
               [](O& o) -> int& { return o.minimizer.linear_solver.max_iterations; }),
       Choice(
+          "preconditioner", kAlternating,
+          [](const O& o) {
+            const auto preconditioner = o.minimizer.linear_solver.preconditioner;
+            return std::string(solvers::PreconditionerName(preconditioner));
+          },
+          [](const std::string& text, O& o) {
+            if (!solvers::ParsePreconditioner(text, &o.minimizer.linear_solver.preconditioner)) {
+              ThrowUnknownChoice("preconditioner", text, "jacobi, multilevel");
+            }
+          }),
+      Choice(
           "ceres_orientations", kCeres,
           [](const O& o) {
             return std::string(o.joint.optimize_orientations ? "blocks" : "closed_form");

@@ -53,12 +53,17 @@ TEST_F(TangentPlaneSmoothingTest, SolveMatchesDenseFactorization) {
     w.row(i) = parameters_.eta * problem_.alpha[i] * v_.h.row(i);
   }
   const Eigen::MatrixXd expected = k.ldlt().solve(w);
-  TangentPlaneSmoother smoother(problem_);
-  LinearSolverOptions options;
-  options.relative_tolerance = 1e-13;
-  const LinearSolveStats stats = smoother.Update(parameters_, options, 2, &v_);
-  EXPECT_LE(stats.relative_residual, 1e-13);
-  EXPECT_LT((Eigen::MatrixXd(v_.t) - expected).norm(), 1e-9 * expected.norm());
+  for (Preconditioner kind : {Preconditioner::kJacobi, Preconditioner::kMultilevel}) {
+    energy::Variables v = v_;
+    TangentPlaneSmoother smoother(problem_);
+    LinearSolverOptions options;
+    options.relative_tolerance = 1e-13;
+    options.preconditioner = kind;
+    const LinearSolveStats stats = smoother.Update(parameters_, options, 2, &v);
+    EXPECT_LE(stats.relative_residual, 1e-13) << PreconditionerName(kind);
+    EXPECT_LT((Eigen::MatrixXd(v.t) - expected).norm(), 1e-9 * expected.norm())
+        << PreconditionerName(kind);
+  }
 }
 
 TEST_F(TangentPlaneSmoothingTest, NoPerturbationLowersTheEnergy) {
@@ -78,13 +83,18 @@ TEST_F(TangentPlaneSmoothingTest, NoPerturbationLowersTheEnergy) {
 }
 
 TEST_F(TangentPlaneSmoothingTest, InexactWarmStartedSolveNeverRaisesTheEnergy) {
-  TangentPlaneSmoother smoother(problem_);
-  LinearSolverOptions options;
-  options.max_iterations = 1;
-  for (int round = 0; round < 10; ++round) {
-    const double before = energy::EvaluateEnergy(problem_, parameters_, v_).total();
-    smoother.Update(parameters_, options, 1, &v_);
-    EXPECT_LE(energy::EvaluateEnergy(problem_, parameters_, v_).total(), before * (1 + 1e-14));
+  for (Preconditioner kind : {Preconditioner::kJacobi, Preconditioner::kMultilevel}) {
+    energy::Variables v = v_;
+    TangentPlaneSmoother smoother(problem_);
+    LinearSolverOptions options;
+    options.max_iterations = 1;
+    options.preconditioner = kind;
+    for (int round = 0; round < 10; ++round) {
+      const double before = energy::EvaluateEnergy(problem_, parameters_, v).total();
+      smoother.Update(parameters_, options, 1, &v);
+      EXPECT_LE(energy::EvaluateEnergy(problem_, parameters_, v).total(), before * (1 + 1e-14))
+          << PreconditionerName(kind);
+    }
   }
 }
 
