@@ -67,6 +67,21 @@ Parameter Choice(std::string name, Scope scope,
   throw std::invalid_argument("parameter " + name + ": '" + text + "' is not one of " + choices);
 }
 
+// A choice stored as an enum with a name function and a parser (solvers' Name/Parse pairs).
+template <typename Enum, typename NameOf>
+Parameter EnumChoice(std::string name, Scope scope, std::function<Enum&(DenoiseOptions&)> field,
+                     NameOf name_of, bool (*parse)(const std::string&, Enum*),
+                     std::string choices) {
+  auto get = [field, name_of](const DenoiseOptions& o) {
+    DenoiseOptions copy = o;  // `field` reaches into a mutable DenoiseOptions
+    return std::string(name_of(field(copy)));
+  };
+  auto set = [name, field, parse, choices](const std::string& text, DenoiseOptions& o) {
+    if (!parse(text, &field(o))) ThrowUnknownChoice(name, text, choices);
+  };
+  return Choice(std::move(name), scope, std::move(get), std::move(set));
+}
+
 const std::vector<Parameter>& Parameters() {
   using O = DenoiseOptions;
   constexpr Scope kBoth = Scope::kBoth;
@@ -100,17 +115,10 @@ const std::vector<Parameter>& Parameters() {
              [](O& o) -> double& { return o.minimizer.linear_solver.relative_tolerance; }),
       Integer("max_cg_iterations", kAlternating,
               [](O& o) -> int& { return o.minimizer.linear_solver.max_iterations; }),
-      Choice(
+      EnumChoice<solvers::Preconditioner>(
           "preconditioner", kAlternating,
-          [](const O& o) {
-            const auto preconditioner = o.minimizer.linear_solver.preconditioner;
-            return std::string(solvers::PreconditionerName(preconditioner));
-          },
-          [](const std::string& text, O& o) {
-            if (!solvers::ParsePreconditioner(text, &o.minimizer.linear_solver.preconditioner)) {
-              ThrowUnknownChoice("preconditioner", text, "jacobi, multilevel");
-            }
-          }),
+          [](O& o) -> solvers::Preconditioner& { return o.minimizer.linear_solver.preconditioner; },
+          solvers::PreconditionerName, solvers::ParsePreconditioner, "jacobi, multilevel"),
       Choice(
           "ceres_orientations", kCeres,
           [](const O& o) {
@@ -122,15 +130,11 @@ const std::vector<Parameter>& Parameters() {
             }
             o.joint.optimize_orientations = text == "blocks";
           }),
-      Choice(
+      EnumChoice<ceres::LinearSolverType>(
           "ceres_linear_solver", kCeres,
-          [](const O& o) { return solvers::JointLinearSolverName(o.joint.linear_solver_type); },
-          [](const std::string& text, O& o) {
-            if (!solvers::ParseJointLinearSolver(text, &o.joint.linear_solver_type)) {
-              ThrowUnknownChoice("ceres_linear_solver", text,
-                                 "sparse_schur, iterative_schur, sparse_normal_cholesky, cgnr");
-            }
-          }),
+          [](O& o) -> ceres::LinearSolverType& { return o.joint.linear_solver_type; },
+          solvers::JointLinearSolverName, solvers::ParseJointLinearSolver,
+          "sparse_schur, iterative_schur, sparse_normal_cholesky, cgnr"),
       Integer("ceres_max_iters", kCeres, [](O& o) -> int& { return o.joint.max_iterations; }),
       Number("ceres_function_tolerance", kCeres,
              [](O& o) -> double& { return o.joint.function_tolerance; }),

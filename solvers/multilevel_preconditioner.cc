@@ -34,22 +34,25 @@ void MultilevelPreconditioner::Update(const SymmetricRows& k,
                                       const energy::PlaneField& field) {
   const int levels = num_levels();
   const int n = level_sizes_[0];
-  // Scales |t_i|, floored at 1e-3 of their mean so that no point drops out of the coarse
-  // levels (all 1 for a zero field).
-  scale_.resize(n);
-  double mean_norm = 0.0;
-  for (int i = 0; i < n; ++i) mean_norm += field.row(i).norm() / n;
-  for (int i = 0; i < n; ++i) {
-    scale_[i] = mean_norm > 0.0 ? std::max(field.row(i).norm(), 1e-3 * mean_norm) : 1.0;
+  if (levels > 1) {
+    // Scales |t_i|, floored at 1e-3 of their mean so that no point drops out of the coarse
+    // levels (all 1 for a zero field).
+    scale_.resize(n);
+    double mean_norm = 0.0;
+    for (int i = 0; i < n; ++i) mean_norm += field.row(i).norm() / n;
+    for (int i = 0; i < n; ++i) {
+      scale_[i] = mean_norm > 0.0 ? std::max(field.row(i).norm(), 1e-3 * mean_norm) : 1.0;
+    }
   }
   // Orientations: each child joins its parent's running oriented sum of the field with the
   // sign that agrees with it (the first child sets the parent's orientation).
-  std::vector<double> child_sum(field.data(), field.data() + field.size());
+  std::vector<double> child_sum, parent_sum;
   for (int l = 0; l + 1 < levels; ++l) {
-    std::vector<double> parent_sum(4 * static_cast<size_t>(level_sizes_[l + 1]), 0.0);
+    const double* children = l == 0 ? field.data() : child_sum.data();
+    parent_sum.assign(4 * static_cast<size_t>(level_sizes_[l + 1]), 0.0);
     for (int c = 0; c < level_sizes_[l]; ++c) {
       Row parent(parent_sum.data() + 4 * Parent(c));
-      const ConstRow child(child_sum.data() + 4 * c);
+      const ConstRow child(children + 4 * c);
       const signed char flip = (parent * child).sum() >= 0.0 ? 1 : -1;
       flip_[l][c] = flip;
       parent += flip * child;
@@ -60,8 +63,9 @@ void MultilevelPreconditioner::Update(const SymmetricRows& k,
   // at which i and j share an aggregate. Once they share one the sign product stays fixed,
   // so each entry is added once, at the level where i and j meet, and every level then
   // inherits its children's sums.
-  std::vector<std::vector<double>> diagonal(levels);
-  for (int l = 0; l < levels; ++l) diagonal[l].assign(level_sizes_[l], 0.0);
+  // Accumulated in place, then inverted.
+  std::vector<std::vector<double>>& diagonal = inverse_diagonal_;
+  for (std::vector<double>& level : diagonal) std::fill(level.begin(), level.end(), 0.0);
   for (int i = 0; i < n; ++i) {
     for (int e = k.row_offsets[i]; e < k.row_offsets[i + 1]; ++e) {
       int a = i, b = k.columns[e], l = 0;
@@ -71,6 +75,7 @@ void MultilevelPreconditioner::Update(const SymmetricRows& k,
         if (levels > 1) diagonal[1][Parent(a)] += scale_[a] * scale_[a] * k.values[e];
         continue;
       }
+      if (levels == 1) continue;  // Jacobi: off-diagonal entries never share an aggregate
       double sign = scale_[a] * scale_[b];
       while (a != b && l + 1 < levels) {
         sign *= flip_[l][a] * flip_[l][b];
@@ -84,8 +89,8 @@ void MultilevelPreconditioner::Update(const SymmetricRows& k,
   for (int l = 2; l < levels; ++l) {
     for (int c = 0; c < level_sizes_[l - 1]; ++c) diagonal[l][Parent(c)] += diagonal[l - 1][c];
   }
-  for (int l = 0; l < levels; ++l) {
-    for (int c = 0; c < level_sizes_[l]; ++c) inverse_diagonal_[l][c] = 1.0 / diagonal[l][c];
+  for (std::vector<double>& level : diagonal) {
+    for (double& d : level) d = 1.0 / d;
   }
 }
 
