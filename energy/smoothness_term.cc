@@ -5,16 +5,15 @@
 
 #include "energy/geman_mcclure_loss.h"
 #include "energy/plane_residuals.h"
+#include "energy/row_sum.h"
 
 namespace lpd::energy {
 
 double SmoothnessTerm::Evaluate(const Variables& v) const {
   const int num_pairs = problem_.graph.num_pairs();
-  double sum = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : sum) num_threads(num_threads_)
-  for (int p = 0; p < num_pairs; ++p) {
-    sum += problem_.beta[p] * penalty_.LineProcessCost(SquaredDifference(v, p), v.m[p]);
-  }
+  const double sum = SumOverRows(num_pairs, num_threads_, 0.0, [&](int p, double* total) {
+    *total += problem_.beta[p] * penalty_.LineProcessCost(SquaredDifference(v, p), v.m[p]);
+  });
   return 0.5 * lambda_ * sum;
 }
 

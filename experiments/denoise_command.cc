@@ -1,6 +1,8 @@
 // lpd denoise [INPUT] -o OUTPUT [flags]: the paper's method on a file, or on a built-in
-// noisy box when no INPUT is given.
+// noisy box when no INPUT is given; --save-state / --resume stop and continue a run.
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <stdexcept>
@@ -9,13 +11,22 @@
 
 #include "experiments/commands.h"
 #include "experiments/denoise_flags.h"
+#include "experiments/denoise_state_file.h"
 #include "experiments/noise.h"
 #include "experiments/point_cloud_io.h"
 #include "experiments/shape_catalog.h"
 #include "solvers/denoise_point_set.h"
 
 DEFINE_string(output, "", "output file (.ply with normals and indicators, or .xyz); also -o");
-DEFINE_bool(overwrite, false, "replace OUTPUT if it already exists");
+DEFINE_bool(overwrite, false, "replace OUTPUT (and the --save_state file) if it already exists");
+DEFINE_string(save_state, "",
+              "after the iterations, save the optimizer's state (H, T, L, M, S, the k-NN "
+              "graph, the parameters and Alg. 1's progress) to this file; also --save-state");
+DEFINE_string(resume, "",
+              "continue the run saved in this file instead of reading INPUT: no k-NN search, "
+              "the saved parameters unless flags are given (not k or initialization), "
+              "--max_iters more iterations; with the saved thread count the result is the "
+              "same bit for bit as one uninterrupted run; also --resume=FILE");
 DEFINE_bool(quiet, false, "do not print per-iteration progress");
 DEFINE_bool(trace, false, "print the energy per term after every block update at the end");
 DEFINE_uint64(seed, 1, "random seed of generated samples (and, plus one, of their noise)");
@@ -90,6 +101,32 @@ PointCloud MakeOutputCloud(const solvers::DenoiseResult& result) {
   return cloud;
 }
 
+// The options and state a resumed run continues from, with the flags applied.
+solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
+  for (const char* fixed : {"k", "initialization", "initialization_seed"}) {
+    if (FlagGiven(fixed)) {
+      throw std::invalid_argument(std::string("--") + fixed +
+                                  " cannot change on --resume (the state fixes it)");
+    }
+  }
+  SavedDenoiseRun saved = ReadDenoiseState(FLAGS_resume);
+  *options = DenoiseOptionsFromFlags(&saved.parameters);
+  if (!FlagGiven("threads")) {
+    options->minimizer.num_threads = saved.num_threads;
+  } else if (FLAGS_threads != saved.num_threads) {
+    std::fprintf(stderr,
+                 "note: the state was saved with %d threads; with %d the result can differ "
+                 "in the last bits from an uninterrupted run\n",
+                 saved.num_threads, FLAGS_threads);
+  }
+  // A new mu_l, or a new scale for it, is taken up again at the next local step.
+  if (FlagGiven("mu_l") || FlagGiven("mu_l_noise_sigmas")) saved.state.progress.mu_l = NAN;
+  std::fprintf(stderr, "resuming %s: %d points, k = %d, after %d iterations\n",
+               FLAGS_resume.c_str(), saved.state.problem.num_points(), saved.state.problem.k(),
+               saved.state.progress.iterations);
+  return std::move(saved.state);
+}
+
 }  // namespace
 
 int RunDenoiseCommand(const std::vector<std::string>& arguments) {
@@ -97,14 +134,31 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     throw std::invalid_argument("denoise takes at most one INPUT file, got " +
                                 std::to_string(arguments.size()));
   }
-  solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
-  options.minimizer.trace_blocks = FLAGS_trace;  // per-block energies cost a pass each
-  const bool use_default = arguments.empty();
-  if (!use_default && FLAGS_output.empty()) {
-    throw std::invalid_argument("missing output file: give -o OUTPUT");
+  const bool resume = !FLAGS_resume.empty();
+  if (resume && !arguments.empty()) {
+    throw std::invalid_argument("give either INPUT or --resume, not both");
   }
-  if (!use_default && FLAGS_output == arguments[0]) {
-    throw std::invalid_argument("OUTPUT must differ from INPUT (refusing to overwrite input)");
+  solvers::DenoiseOptions options;
+  solvers::DenoiseState state;
+  if (resume) state = ResumeState(&options);
+  else options = DenoiseOptionsFromFlags();
+  options.minimizer.trace_blocks = FLAGS_trace;  // per-block energies cost a pass each
+  const bool use_default = arguments.empty() && !resume;
+  if (!use_default && FLAGS_output.empty() && FLAGS_save_state.empty()) {
+    throw std::invalid_argument("missing output file: give -o OUTPUT (or --save_state)");
+  }
+  std::vector<std::string> given_paths = arguments;
+  if (resume) given_paths.push_back(FLAGS_resume);
+  for (const std::string& path : given_paths) {
+    for (const std::string& output : {FLAGS_output, FLAGS_save_state}) {
+      if (output == path && !(output == FLAGS_resume && FLAGS_overwrite)) {
+        throw std::invalid_argument("output " + output +
+                                    " is also an input (refusing to overwrite it)");
+      }
+    }
+  }
+  if (!FLAGS_output.empty() && FLAGS_output == FLAGS_save_state) {
+    throw std::invalid_argument("-o and --save_state name the same file");
   }
   if (!FLAGS_output.empty()) {
     const std::string extension = FileExtension(FLAGS_output);
@@ -114,24 +168,34 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     }
   }
 
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   DefaultInput default_input;
-  energy::PointList input;
+  energy::PointList input_normals;  // from a PLY input with nx, ny, nz
   if (use_default) {
     default_input = MakeDefaultInput();
-    input = default_input.points;
     std::fprintf(stderr,
                  "no INPUT given: denoising the built-in %s, %d points, Gaussian noise "
                  "%.2f%% of the bounding-box diagonal, seed %llu\n",
                  default_input.shape.description().c_str(), FLAGS_default_points,
                  100.0 * FLAGS_default_noise,
                  static_cast<unsigned long long>(FLAGS_seed));
-  } else {
-    input = ReadPoints(arguments[0]);
+    state = solvers::StartDenoising(default_input.points, options);
+  } else if (!resume) {
+    PointCloud cloud = ReadPointCloud(arguments[0]);
+    input_normals = std::move(cloud.normals);
+    state = solvers::StartDenoising(cloud.points, options,
+                                    input_normals.empty() ? nullptr : &input_normals);
   }
 
-  const solvers::DenoiseResult result = solvers::DenoisePointSet(
-      input, options,
+  solvers::SolverSummary summary = solvers::MinimizeFromState(
+      options, &state,
       FLAGS_quiet ? solvers::IterationCallback() : ProgressPrinter(options.solver));
+  if (!FLAGS_save_state.empty()) {
+    WriteDenoiseState(FLAGS_save_state, state, options, FLAGS_overwrite);
+  }
+  solvers::DenoiseResult result = solvers::FinishDenoising(state, options, std::move(summary));
+  result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
 
   const PointCloud cloud = MakeOutputCloud(result);
@@ -142,12 +206,12 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   std::printf(
       "points in %zu, out %zu, outliers flagged %d, removed %d, feature points %d, "
       "iterations %d, time %.2f s (k-NN %.2f s)\n",
-      input.size(), cloud.points.size(), result.num_outliers, result.num_removed,
+      state.order.size(), cloud.points.size(), result.num_outliers, result.num_removed,
       result.num_features, result.summary.num_iterations, result.total_seconds,
       result.setup_seconds);
   if (use_default) {
     const double diagonal = default_input.diagonal;
-    const double before = MeanDistance(default_input.shape, input);
+    const double before = MeanDistance(default_input.shape, default_input.points);
     const double after = MeanDistance(default_input.shape, cloud.points);
     std::printf(
         "mean distance to the clean box: input %.3e, output %.3e (/diagonal: %.3e -> %.3e, "
@@ -155,6 +219,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
         before, after, before / diagonal, after / diagonal,
         after <= before ? before / after : after / before, after <= before ? "lower" : "higher");
   }
+  if (!FLAGS_save_state.empty()) std::printf("saved state %s\n", FLAGS_save_state.c_str());
   if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());
   return 0;
 }

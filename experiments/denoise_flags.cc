@@ -22,7 +22,10 @@ DEFINE_string(solver, "alternating",
               "Eq. 5 minimized over H, T, S at once by Ceres)");
 DEFINE_string(initialization, "auto",
               "start of the minimization: zero (Alg. 1: H = T = 0), plane_fit (PCA planes, "
-              "T = H), or auto (zero for alternating, plane_fit for ceres)");
+              "T = H), random (uniform h_i, as the reference implementation), input_normals "
+              "(planes through the points with the normals of a PLY input), or auto (zero for "
+              "alternating, plane_fit for ceres)");
+DEFINE_int32(initialization_seed, 1, "random seed of --initialization=random");
 // ---- schedule (Alg. 1) ----
 DEFINE_int32(max_iters, 5,
              "maximum outer iterations of Alg. 1 (reference implementation: 5; more "
@@ -31,6 +34,21 @@ DEFINE_int32(inner_iters, 2, "(T, M, S) passes per outer iteration (paper: 2)");
 DEFINE_double(energy_tolerance, 0.01,
               "stop when the energy changes by less than this fraction over three "
               "iterations (paper: 0.01); 0 runs all iterations");
+DEFINE_bool(optimize_orientations, true,
+            "update the orientations s_ij (Eq. 8); false holds them at 1 (ablation of Fig. 4)");
+DEFINE_double(mu_l_noise_sigmas, 0.0,
+              "if > 0, replaces --mu_l by (c sigma)^2 with c this value and sigma = 1.4826 "
+              "median |h_i.q_j| after the first local fit (a robust noise estimate); 3 is a "
+              "good start");
+// ---- graduated non-convexity ----
+DEFINE_string(gnc, "none",
+              "continue mu_l, mu_m or both from a convex start down to their targets (none, "
+              "mu_l, mu_m, both); the stages count toward --max_iters");
+DEFINE_double(gnc_start_ratio, 0.0,
+              "first-stage mu as a multiple of its target; 0 starts where the Geman-McClure "
+              "cost is convex over all current residuals (3 max r^2)");
+DEFINE_double(gnc_factor, 1.4, "divide the continued mu by this after every stage");
+DEFINE_int32(gnc_stage_iters, 1, "outer iterations per GNC stage");
 DEFINE_double(linear_tolerance, 1e-4, "relative residual at which the T solve (Eq. 9) stops");
 DEFINE_int32(max_cg_iterations, 2000, "conjugate-gradient iterations per T solve, at most");
 DEFINE_string(preconditioner, "multilevel",
@@ -60,21 +78,27 @@ DEFINE_double(max_removed_fraction, 0.5,
 
 namespace lpd::experiments {
 
-solvers::DenoiseOptions DenoiseOptionsFromFlags() {
+bool FlagGiven(const char* name) { return !gflags::GetCommandLineFlagInfoOrDie(name).is_default; }
+
+solvers::DenoiseOptions DenoiseOptionsFromFlags(
+    const std::vector<std::pair<std::string, std::string>>* saved) {
   solvers::DenoiseOptions options;
   if (!solvers::ParseSolver(FLAGS_solver, &options.solver)) {
     throw std::invalid_argument("--solver must be alternating or ceres, got '" + FLAGS_solver +
                                 "'");
+  }
+  if (saved) {
+    for (const auto& [name, value] : *saved) SetDenoiseParameter(name, value, &options);
   }
   for (const std::string& name : DenoiseParameterNames()) {
     const gflags::CommandLineFlagInfo flag = gflags::GetCommandLineFlagInfoOrDie(name.c_str());
     if (!flag.is_default && !DenoiseParameterApplies(name, options.solver)) {
       throw std::invalid_argument("--" + name + " has no effect with --solver=" + FLAGS_solver);
     }
-    SetDenoiseParameter(name, flag.current_value, &options);
+    if (!saved || !flag.is_default) SetDenoiseParameter(name, flag.current_value, &options);
   }
-  if (!gflags::GetCommandLineFlagInfoOrDie("mu_m_deg").is_default) {
-    if (!gflags::GetCommandLineFlagInfoOrDie("mu_m").is_default) {
+  if (FlagGiven("mu_m_deg")) {
+    if (FlagGiven("mu_m")) {
       throw std::invalid_argument("give either --mu_m or --mu_m_deg, not both");
     }
     SetDenoiseParameter("mu_m_deg", std::to_string(FLAGS_mu_m_deg), &options);

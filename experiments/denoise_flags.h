@@ -3,6 +3,10 @@
 #ifndef LPD_EXPERIMENTS_DENOISE_FLAGS_H_
 #define LPD_EXPERIMENTS_DENOISE_FLAGS_H_
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include <gflags/gflags.h>
 
 #include "solvers/denoise_point_set.h"
@@ -11,8 +15,14 @@ DECLARE_int32(threads);
 
 namespace lpd::experiments {
 
-// DenoiseOptions from the flags; throws std::invalid_argument naming a bad flag.
-solvers::DenoiseOptions DenoiseOptionsFromFlags();
+// DenoiseOptions from the flags; throws std::invalid_argument naming a bad flag. With
+// `saved` (the parameters of a saved run, by name), those are the defaults and only the
+// flags given on the command line change them.
+solvers::DenoiseOptions DenoiseOptionsFromFlags(
+    const std::vector<std::pair<std::string, std::string>>* saved = nullptr);
+
+// True if flag `name` was given on the command line.
+bool FlagGiven(const char* name);
 
 }  // namespace lpd::experiments
 

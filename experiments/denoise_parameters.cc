@@ -103,14 +103,29 @@ const std::vector<Parameter>& Parameters() {
             } else if (solvers::ParseInitialization(text, &initialization)) {
               o.initialization = initialization;
             } else {
-              ThrowUnknownChoice("initialization", text, "auto, zero, plane_fit");
+              ThrowUnknownChoice("initialization", text,
+                                 "auto, zero, plane_fit, random, input_normals");
             }
           }),
+      Integer("initialization_seed", kBoth,
+              [](O& o) -> int& { return o.initialization_seed; }),
       Integer("max_iters", kAlternating, [](O& o) -> int& { return o.minimizer.max_iterations; }),
       Integer("inner_iters", kAlternating,
               [](O& o) -> int& { return o.minimizer.inner_iterations; }),
       Number("energy_tolerance", kAlternating,
              [](O& o) -> double& { return o.minimizer.energy_tolerance; }),
+      Flag("optimize_orientations", kAlternating,
+           [](O& o) -> bool& { return o.minimizer.optimize_orientations; }),
+      Number("mu_l_noise_sigmas", kAlternating,
+             [](O& o) -> double& { return o.minimizer.mu_l_noise_sigmas; }),
+      EnumChoice<solvers::GncTarget>(
+          "gnc", kAlternating, [](O& o) -> solvers::GncTarget& { return o.minimizer.gnc.target; },
+          solvers::GncTargetName, solvers::ParseGncTarget, "none, mu_l, mu_m, both"),
+      Number("gnc_start_ratio", kAlternating,
+             [](O& o) -> double& { return o.minimizer.gnc.start_ratio; }),
+      Number("gnc_factor", kAlternating, [](O& o) -> double& { return o.minimizer.gnc.factor; }),
+      Integer("gnc_stage_iters", kAlternating,
+              [](O& o) -> int& { return o.minimizer.gnc.stage_iterations; }),
       Number("linear_tolerance", kAlternating,
              [](O& o) -> double& { return o.minimizer.linear_solver.relative_tolerance; }),
       Integer("max_cg_iterations", kAlternating,
@@ -174,9 +189,15 @@ double ParseNumber(const std::string& name, const std::string& text) {
   return value;
 }
 
+// The shortest of 15 or 17 significant digits that reads back as exactly `value` (a saved
+// state must resume with the very same doubles).
 std::string Text(double value) {
   std::ostringstream out;
-  out.precision(12);
+  out.precision(15);
+  out << value;
+  if (std::strtod(out.str().c_str(), nullptr) == value) return out.str();
+  out.str("");
+  out.precision(17);
   out << value;
   return out.str();
 }

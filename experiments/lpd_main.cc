@@ -1,4 +1,5 @@
 // lpd: command-line entry point. `lpd COMMAND [ARGS] [--flags]`; `lpd COMMAND --help`.
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -96,7 +97,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   const Command& command = found->second;
-  // Rewrite "-o FILE" as "--output=FILE" and catch --help before gflags sees it.
+  // Rewrite "-o FILE" as "--output=FILE" and "--save-state" as "--save_state" (flag names
+  // may be spelled with hyphens), and catch --help before gflags sees it.
   std::vector<std::string> rewritten = {std::string("lpd ") + argv[1]};
   for (int a = 2; a < argc; ++a) {
     const std::string arg = argv[a];
@@ -110,6 +112,10 @@ int main(int argc, char** argv) {
         return 2;
       }
       rewritten.push_back("--output=" + std::string(argv[++a]));
+    } else if (arg.rfind("--", 0) == 0) {
+      std::string flag = arg;
+      std::replace(flag.begin() + 2, std::find(flag.begin(), flag.end(), '='), '-', '_');
+      rewritten.push_back(flag);
     } else {
       rewritten.push_back(arg);
     }

@@ -1,13 +1,16 @@
 #include "solvers/alternating_minimizer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "energy/energy.h"
 #include "energy/fitting_term.h"
 #include "energy/smoothness_term.h"
 #include "solvers/local_plane_fit.h"
+#include "solvers/residual_statistics.h"
 
 namespace lpd::solvers {
 namespace {
@@ -31,6 +34,10 @@ bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
     out << "energy_tolerance must be finite and >= 0, got " << energy_tolerance;
   } else if (energy_window < 1) {
     out << "energy_window must be >= 1, got " << energy_window;
+  } else if (!(mu_l_noise_sigmas >= 0.0) || !std::isfinite(mu_l_noise_sigmas)) {
+    out << "mu_l_noise_sigmas must be finite and >= 0, got " << mu_l_noise_sigmas;
+  } else if (!gnc.IsValid(error)) {
+    return false;
   } else if (num_threads < 1) {
     out << "threads must be >= 1, got " << num_threads;
   } else {
@@ -42,15 +49,21 @@ bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
 
 SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
                                              const Options& options, energy::Variables* v,
-                                             const IterationCallback& callback) {
+                                             const IterationCallback& callback,
+                                             MinimizerProgress* progress) {
   SolverSummary summary;
   const Clock::time_point run_start = Clock::now();
   if (!options.IsValid(&summary.message)) return summary;
+  MinimizerProgress local_progress;
+  MinimizerProgress& state = progress ? *progress : local_progress;
 
   const int threads = options.num_threads;
-  const energy::EnergyParameters& parameters = options.energy;
-  const energy::FittingTerm fitting(problem, parameters.mu_l, threads);
-  const energy::SmoothnessTerm smoothness(problem, parameters.lambda, parameters.mu_m, threads);
+  const GncOptions& gnc = options.gnc;
+  // The energy of Eq. (5) at the target selectivities; mu_l may still be replaced by the
+  // scale-aware value at the first local step.
+  energy::EnergyParameters parameters = options.energy;
+  if (!std::isnan(state.mu_l)) parameters.mu_l = state.mu_l;
+  if (!options.optimize_orientations) v->s.setOnes();
   TangentPlaneSmoother smoother(problem);
   const Clock::time_point initial_start = Clock::now();
   summary.initial_energy = energy::EvaluateEnergy(problem, parameters, *v, threads);
@@ -75,10 +88,10 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
     return step;
   };
 
-  std::vector<double> history;
   summary.termination = TerminationType::kNoConvergence;
   summary.message = "reached max_iters";
-  for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+  const int last_iteration = state.iterations + options.max_iterations;
+  for (int iteration = state.iterations + 1; iteration <= last_iteration; ++iteration) {
     const Clock::time_point iteration_start = Clock::now();
     IterationRecord record;
     record.iteration = iteration;
@@ -87,6 +100,19 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
       UpdateLocalPlanes(problem, parameters, threads, v);
       return -1;
     }).seconds;
+    if (std::isnan(state.mu_l)) {  // the first local step fixes the target mu_l
+      if (options.mu_l_noise_sigmas > 0.0) {
+        const double scale = options.mu_l_noise_sigmas * RobustFittingResidualScale(problem, *v);
+        // Noise-free input has zero residuals; keep mu_l positive.
+        parameters.mu_l = std::max(scale * scale, std::numeric_limits<double>::min());
+      }
+      state.mu_l = parameters.mu_l;
+    }
+    if (gnc.continues_mu_l() && !state.gnc_mu_l.started()) {
+      state.gnc_mu_l.Start(gnc, parameters.mu_l, MaxSquaredFittingResidual(problem, *v, threads));
+    }
+    record.mu_l = state.gnc_mu_l.Value(parameters.mu_l);
+    const energy::FittingTerm fitting(problem, record.mu_l, threads);
     record.local_seconds += run_block("L", iteration, 0, [&] {
       fitting.UpdateLineProcesses(v);
       return -1;
@@ -98,14 +124,22 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
       });
       record.global_seconds += t_step.seconds;
       record.cg_iterations += t_step.cg_iterations;
+      if (gnc.continues_mu_m() && !state.gnc_mu_m.started()) {
+        state.gnc_mu_m.Start(gnc, parameters.mu_m,
+                             MaxSquaredSmoothnessResidual(problem, *v, threads));
+      }
+      record.mu_m = state.gnc_mu_m.Value(parameters.mu_m);
+      const energy::SmoothnessTerm smoothness(problem, parameters.lambda, record.mu_m, threads);
       record.global_seconds += run_block("M", iteration, inner, [&] {
         smoothness.UpdateLineProcesses(v);
         return -1;
       }).seconds;
-      record.global_seconds += run_block("S", iteration, inner, [&] {
-        smoothness.UpdateOrientations(v);
-        return -1;
-      }).seconds;
+      if (options.optimize_orientations) {
+        record.global_seconds += run_block("S", iteration, inner, [&] {
+          smoothness.UpdateOrientations(v);
+          return -1;
+        }).seconds;
+      }
     }
     record.energy = options.trace_blocks
                         ? summary.steps.back().energy
@@ -115,6 +149,16 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
     summary.iterations.push_back(record);
     summary.num_iterations = iteration;
     summary.final_energy = record.energy;
+    state.iterations = iteration;
+
+    // The next GNC stage, or none once both continued selectivities are at their targets.
+    const bool at_targets = state.gnc_mu_l.AtTarget(parameters.mu_l) &&
+                            state.gnc_mu_m.AtTarget(parameters.mu_m);
+    if (!at_targets && ++state.stage_iterations == gnc.stage_iterations) {
+      state.gnc_mu_l.Shrink(gnc, parameters.mu_l);
+      state.gnc_mu_m.Shrink(gnc, parameters.mu_m);
+      state.stage_iterations = 0;
+    }
 
     const double total = record.energy.total();
     if (!std::isfinite(total)) {
@@ -122,12 +166,14 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
       summary.message = "the energy became non-finite at iteration " + std::to_string(iteration);
       break;
     }
-    history.push_back(total);
     if (callback && !callback(record)) {
       summary.termination = TerminationType::kUserAbort;
       summary.message = "stopped by the callback";
       break;
     }
+    if (!at_targets) continue;
+    std::vector<double>& history = state.energy_history;
+    history.push_back(total);
     const int w = options.energy_window;
     if (options.energy_tolerance > 0.0 && static_cast<int>(history.size()) > w) {
       const double before = history[history.size() - 1 - w];
@@ -141,6 +187,11 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
       }
     }
   }
+  if (summary.termination == TerminationType::kNoConvergence &&
+      !(state.gnc_mu_l.AtTarget(parameters.mu_l) && state.gnc_mu_m.AtTarget(parameters.mu_m))) {
+    summary.message = "reached max_iters before graduated non-convexity reached its targets";
+  }
+  summary.mu_l = parameters.mu_l;
   summary.total_seconds = SecondsSince(run_start);
   return summary;
 }

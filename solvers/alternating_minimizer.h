@@ -5,18 +5,41 @@
 // exact minimizer of Eq. (5) over its block, so once H is on the unit sphere the energy never
 // increases. The run stops after `max_iterations`, or when the total energy changed by less
 // than `energy_tolerance` (relative) over the last `energy_window` iterations.
+//
+// Options beyond the paper, for ablations: S held at 1 (Fig. 4), a scale-aware mu_l from the
+// residuals of the first local fit, and graduated non-convexity on mu_l and/or mu_m. A run
+// can stop and continue later (warm restart, Sec. 4.1): MinimizerProgress holds everything
+// besides the variables that the next iterations depend on, so a continued run is the same
+// bit for bit as an uninterrupted one (at a fixed thread count).
 #ifndef LPD_SOLVERS_ALTERNATING_MINIMIZER_H_
 #define LPD_SOLVERS_ALTERNATING_MINIMIZER_H_
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "energy/energy_parameters.h"
 #include "energy/problem.h"
 #include "energy/variables.h"
+#include "solvers/graduated_nonconvexity.h"
 #include "solvers/solver_summary.h"
 #include "solvers/tangent_plane_smoothing.h"
 
 namespace lpd::solvers {
+
+// Where a run of Alg. 1 stands between two calls of Minimize.
+struct MinimizerProgress {
+  int iterations = 0;  // outer iterations done
+  // The mu_l in use: options.energy.mu_l, or the scale-aware value once the first local step
+  // has set it. NaN until the first iteration.
+  double mu_l = NAN;
+  // Graduated non-convexity: the current stage's selectivities and the outer iterations
+  // done at that stage.
+  ContinuedSelectivity gnc_mu_l, gnc_mu_m;
+  int stage_iterations = 0;
+  // Total energies of the iterations run at the target selectivities (convergence test).
+  std::vector<double> energy_history;
+};
 
 class AlternatingMinimizer {
  public:
@@ -33,6 +56,16 @@ class AlternatingMinimizer {
     // "does not change by more than 1% over three iterations"). 0 disables the test.
     double energy_tolerance = 0.01;
     int energy_window = 3;
+    // Alg. 1 line 16 (Eq. 8); false holds every s_ij at 1, the ablation of Fig. 4.
+    bool optimize_orientations = true;
+    // When > 0, mu_l = (c sigma)^2 with c = mu_l_noise_sigmas and sigma the robust residual
+    // scale (residual_statistics.h) after the first local step, replacing energy.mu_l. With
+    // c = 3, a residual of one sigma keeps l = 0.81 and one of three sigma l = 0.25 (Eq. 6).
+    double mu_l_noise_sigmas = 0.0;
+    // Continuation of mu_l and/or mu_m toward their targets; its stages come before, and
+    // count toward, max_iterations. The convergence test only looks at iterations run at the
+    // targets, and energies are always those of Eq. (5) at the targets.
+    GncOptions gnc;
 
     // ---- T solve (Eq. 9) ----
     LinearSolverOptions linear_solver;
@@ -46,10 +79,13 @@ class AlternatingMinimizer {
     bool IsValid(std::string* error) const;
   };
 
-  // Runs Alg. 1 from the state in `v` (use energy::InitialVariables for lines 2-5).
+  // Runs Alg. 1 from the state in `v` (use energy::InitialVariables for lines 2-5), for at
+  // most options.max_iterations further outer iterations. `progress` (optional) is where a
+  // previous call stopped and is updated; iteration numbers continue from it.
   static SolverSummary Minimize(const energy::Problem& problem, const Options& options,
                                 energy::Variables* v,
-                                const IterationCallback& callback = nullptr);
+                                const IterationCallback& callback = nullptr,
+                                MinimizerProgress* progress = nullptr);
 };
 
 }  // namespace lpd::solvers

@@ -19,6 +19,14 @@ Values ToInputOrder(const Values& values, const std::vector<int>& order) {
   return input_ordered;
 }
 
+// values[i] belongs to input point i; returns them in problem order (row r: order[r]).
+template <typename Values>
+Values ToProblemOrder(const Values& values, const std::vector<int>& order) {
+  Values ordered(order.size());
+  for (size_t r = 0; r < order.size(); ++r) ordered[r] = values[order[r]];
+  return ordered;
+}
+
 }  // namespace
 
 const char* SolverName(Solver solver) {
@@ -50,39 +58,61 @@ bool DenoiseOptions::IsValid(std::string* error) const {
   return true;
 }
 
-DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
-                              const IterationCallback& callback) {
+DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOptions& options,
+                            const energy::PointList* normals) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  if (normals && normals->size() != points.size()) {
+    throw std::invalid_argument("got " + std::to_string(normals->size()) + " normals for " +
+                                std::to_string(points.size()) + " points");
+  }
+  DenoiseState state;
+  state.order = energy::MortonOrder(points);
+  const int threads = options.minimizer.num_threads;
+  state.problem = energy::BuildProblem(ToProblemOrder(points, state.order), options.problem,
+                                       threads);
+  state.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  energy::PointList ordered_normals;
+  if (normals) ordered_normals = ToProblemOrder(*normals, state.order);
+  state.variables = InitialState(state.problem, options.minimizer.energy,
+                                 options.EffectiveInitialization(), threads,
+                                 options.initialization_seed,
+                                 normals ? &ordered_normals : nullptr);
+  return state;
+}
 
-  DenoiseResult result;
-  // The problem holds the points in Morton order (for memory locality); results are mapped
-  // back to input order at the end.
-  const std::vector<int> order = energy::MortonOrder(points);
-  energy::PointList ordered_points(points.size());
-  for (size_t r = 0; r < order.size(); ++r) ordered_points[r] = points[order[r]];
-  const energy::Problem problem =
-      energy::BuildProblem(ordered_points, options.problem, options.minimizer.num_threads);
-  result.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-
-  const AlternatingMinimizer::Options& minimizer = options.minimizer;
-  energy::Variables v = InitialState(problem, minimizer.energy, options.EffectiveInitialization(),
-                                     minimizer.num_threads);
+SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* state,
+                                const IterationCallback& callback) {
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  SolverSummary summary;
   if (options.solver == Solver::kCeres) {
     CeresJointSolver::Options joint = options.joint;
-    joint.num_threads = minimizer.num_threads;
-    result.summary = CeresJointSolver::Minimize(problem, minimizer.energy, joint, &v, callback);
+    joint.num_threads = options.minimizer.num_threads;
+    summary = CeresJointSolver::Minimize(state->problem, options.minimizer.energy, joint,
+                                         &state->variables, callback);
+    summary.mu_l = options.minimizer.energy.mu_l;
   } else {
-    result.summary = AlternatingMinimizer::Minimize(problem, minimizer, &v, callback);
+    summary = AlternatingMinimizer::Minimize(state->problem, options.minimizer,
+                                             &state->variables, callback, &state->progress);
   }
-  if (!result.summary.IsSolutionUsable()) {
-    throw std::runtime_error("minimization failed: " + result.summary.message);
+  if (!summary.IsSolutionUsable()) {
+    throw std::runtime_error("minimization failed: " + summary.message);
   }
+  return summary;
+}
 
-  ProjectOntoTangentPlanes(problem, v, &result.projected, &result.normals);
-  result.indicators = ComputeIndicators(problem, v, options.final_step);
+DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& options,
+                              SolverSummary summary) {
+  const energy::Problem& problem = state.problem;
+  const std::vector<int>& order = state.order;
+  DenoiseResult result;
+  result.summary = std::move(summary);
+  result.setup_seconds = state.setup_seconds;
+  ProjectOntoTangentPlanes(problem, state.variables, &result.projected, &result.normals);
+  result.indicators = ComputeIndicators(problem, state.variables, options.final_step);
   for (auto* values : {&result.projected, &result.normals}) *values = ToInputOrder(*values, order);
   PointIndicators& indicators = result.indicators;
   indicators.outlier_score = ToInputOrder(indicators.outlier_score, order);
@@ -101,8 +131,7 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
                   "outliers kept: %.1f%% of the points were flagged (more than "
                   "max_removed_fraction = %.0f%%), so mu_l = %.3g is below the noise level",
                   100.0 * result.num_outliers / n,
-                  100.0 * options.final_step.max_removed_fraction,
-                  options.minimizer.energy.mu_l);
+                  100.0 * options.final_step.max_removed_fraction, result.summary.mu_l);
     result.removal_note = note;
     remove = false;
   }
@@ -111,6 +140,17 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
     for (int i = 0; i < n; ++i) result.kept[i] = !result.indicators.is_outlier[i];
     result.num_removed = result.num_outliers;
   }
+  return result;
+}
+
+DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
+                              const IterationCallback& callback,
+                              const energy::PointList* normals) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  DenoiseState state = StartDenoising(points, options, normals);
+  SolverSummary summary = MinimizeFromState(options, &state, callback);
+  DenoiseResult result = FinishDenoising(state, options, std::move(summary));
   result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

@@ -2,7 +2,8 @@
 //
 // Builds the problem (normalization, N, M, alpha, beta), minimizes Eq. (5) with Alg. 1 (or
 // with the Ceres joint-solve baseline), then runs the final denoising of Sec. 3.4. Inputs are
-// never modified.
+// never modified. The three stages are also callable one by one, so that a run can be saved
+// between them and continued later (warm restart, Sec. 4.1).
 #ifndef LPD_SOLVERS_DENOISE_POINT_SET_H_
 #define LPD_SOLVERS_DENOISE_POINT_SET_H_
 
@@ -38,6 +39,7 @@ struct DenoiseOptions {
   // The start of the minimization; unset means kZero for Alg. 1 (as the paper does) and
   // kPlaneFit for the joint solve (which needs every h_i on the unit sphere).
   std::optional<Initialization> initialization;
+  int initialization_seed = 1;               // of initialization random
   FinalDenoisingOptions final_step;          // indicators and outlier removal
 
   Initialization EffectiveInitialization() const;
@@ -61,9 +63,35 @@ struct DenoiseResult {
   double total_seconds = 0.0;
 };
 
-// Throws std::invalid_argument with a one-line reason on invalid options or input.
+// A denoising run between its stages: the problem with its points in Morton order (for
+// memory locality), the optimizer's state, and the way back to input order.
+struct DenoiseState {
+  std::vector<int> order;  // problem point r is input point order[r]
+  energy::Problem problem;
+  energy::Variables variables;
+  MinimizerProgress progress;
+  double setup_seconds = 0.0;  // normalization and k-NN graph
+};
+
+// Stage 1: normalization, N and M, and the initial state. `normals` (in input order) are
+// needed by initialization input_normals only. Throws std::invalid_argument with a one-line
+// reason on invalid options or input.
+DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOptions& options,
+                            const energy::PointList* normals = nullptr);
+
+// Stage 2: minimizes Eq. (5) from `state`, continuing where its progress stands (Alg. 1) or
+// from its variables (the joint solve). Throws std::runtime_error if the solver failed.
+SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* state,
+                                const IterationCallback& callback = nullptr);
+
+// Stage 3: the final denoising of Sec. 3.4, in input order and frame.
+DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& options,
+                              SolverSummary summary);
+
+// The three stages in a row.
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
-                              const IterationCallback& callback = nullptr);
+                              const IterationCallback& callback = nullptr,
+                              const energy::PointList* normals = nullptr);
 
 }  // namespace lpd::solvers
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "solvers/row_sum.h"
+#include "energy/row_sum.h"
 
 namespace lpd::solvers {
 namespace {
@@ -121,7 +121,7 @@ Eigen::Array4d MultilevelPreconditioner::Apply(const double* r, int num_threads,
     }
   }
   const int n = level_sizes_[0];
-  return SumOverRows(n, num_threads, Eigen::Array4d::Zero().eval(), [&](int i, auto* sum) {
+  return energy::SumOverRows(n, num_threads, Eigen::Array4d::Zero().eval(), [&](int i, auto* sum) {
     Eigen::Array4d z_i = inverse_diagonal_[0][i] * ConstRow(r + 4 * i);
     if (levels > 1) z_i += scale_[i] * flip_[0][i] * Row(restricted_[1].data() + 4 * Parent(i));
     Row(z + 4 * i) = z_i;

@@ -5,6 +5,7 @@
 #ifndef LPD_SOLVERS_SOLVER_SUMMARY_H_
 #define LPD_SOLVERS_SOLVER_SUMMARY_H_
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct IterationRecord {
   // (the time axis of energy-versus-time comparisons).
   double elapsed_seconds = 0.0;
   int cg_iterations = 0;            // summed over the inner passes / linear solver iterations
+  // The selectivities this iteration's line-process updates used (they differ from the
+  // energy's only during graduated non-convexity).
+  double mu_l = NAN;
+  double mu_m = NAN;
 };
 
 // Called after every iteration; returning false stops the run (USER_ABORT).
@@ -54,6 +59,8 @@ struct SolverSummary {
   energy::EnergyBreakdown initial_energy;
   energy::EnergyBreakdown final_energy;
   int num_iterations = 0;
+  // The target mu_l the energies are evaluated with (the scale-aware one if it was chosen).
+  double mu_l = NAN;
   std::vector<StepRecord> steps;
   std::vector<IterationRecord> iterations;
   double total_seconds = 0.0;

@@ -5,11 +5,12 @@
 #include <stdexcept>
 
 #include "solvers/parse_by_name.h"
-#include "solvers/row_sum.h"
+#include "energy/row_sum.h"
 
 namespace lpd::solvers {
 
 using energy::PlaneField;
+using energy::SumOverRows;
 
 const char* PreconditionerName(Preconditioner preconditioner) {
   return preconditioner == Preconditioner::kJacobi ? "jacobi" : "multilevel";

@@ -70,7 +70,13 @@ expect_error bad_flag_value "$dir/good.xyz" --k=abc
 EXT=abc expect_error bad_extension "$dir/good.xyz"
 expect_error unknown_solver "$dir/good.xyz" --solver=newton
 expect_error ceres_from_zero "$dir/good.xyz" --solver=ceres --initialization=zero
-expect_error unknown_initialization "$dir/good.xyz" --initialization=random
+expect_error unknown_initialization "$dir/good.xyz" --initialization=spiral
+expect_error normals_without_normals "$dir/good.xyz" --initialization=input_normals
+expect_error unknown_gnc "$dir/good.xyz" --gnc=mu_x
+expect_error gnc_factor_one "$dir/good.xyz" --gnc=both --gnc_factor=1
+expect_error gnc_start_below_target "$dir/good.xyz" --gnc=both --gnc_start_ratio=0.5
+expect_error negative_noise_sigmas "$dir/good.xyz" --mu_l_noise_sigmas=-1
+expect_error gnc_with_ceres "$dir/good.xyz" --solver=ceres --gnc=mu_m
 expect_error dense_joint_solver "$dir/good.xyz" --solver=ceres --ceres_linear_solver=dense_qr
 expect_error schedule_with_ceres "$dir/good.xyz" --solver=ceres --inner_iters=3
 expect_error ceres_flag_with_alternating "$dir/good.xyz" --ceres_max_iters=3

@@ -5,14 +5,14 @@
 // state (CG step lengths), which would make runs irreproducible. SumOverRows gives every
 // thread one contiguous block of rows (static schedule) and adds the partials in thread
 // order: for a fixed thread count the result is the same bit for bit on every run.
-#ifndef LPD_SOLVERS_ROW_SUM_H_
-#define LPD_SOLVERS_ROW_SUM_H_
+#ifndef LPD_ENERGY_ROW_SUM_H_
+#define LPD_ENERGY_ROW_SUM_H_
 
 #include <vector>
 
 #include <omp.h>
 
-namespace lpd::solvers {
+namespace lpd::energy {
 
 // Returns the sum over rows i < n of what add_row(i, &sum) adds to sum, starting from `zero`.
 template <typename Sum, typename AddRow>
@@ -30,6 +30,6 @@ Sum SumOverRows(int n, int num_threads, const Sum& zero, AddRow&& add_row) {
   return total;
 }
 
-}  // namespace lpd::solvers
+}  // namespace lpd::energy
 
-#endif  // LPD_SOLVERS_ROW_SUM_H_
+#endif  // LPD_ENERGY_ROW_SUM_H_

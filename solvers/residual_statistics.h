@@ -1,0 +1,27 @@
+// lpd: statistics of the current residuals of Eq. (5) that set the selectivities mu_l and mu_m
+// (the scale-aware mu_l and the convex start of graduated non-convexity).
+#ifndef LPD_SOLVERS_RESIDUAL_STATISTICS_H_
+#define LPD_SOLVERS_RESIDUAL_STATISTICS_H_
+
+#include "energy/problem.h"
+#include "energy/variables.h"
+
+namespace lpd::solvers {
+
+// max_{i, j in N(i) u {i}} (h_i^T q_j)^2: the largest squared fitting residual.
+double MaxSquaredFittingResidual(const energy::Problem& problem, const energy::Variables& v,
+                                 int num_threads);
+
+// max_{(i,j) in M} |t_i - s_ij t_j|^2: the largest squared smoothness residual.
+double MaxSquaredSmoothnessResidual(const energy::Problem& problem, const energy::Variables& v,
+                                    int num_threads);
+
+// 1.4826 median |h_i^T q_j| over i and j in N(i) u {i}: the normalized median absolute
+// residual, a robust estimate of the noise's standard deviation (it equals sigma for
+// Gaussian residuals and ignores up to half of the residuals being outliers). Above 2^20
+// residuals it takes the median of an evenly strided subset (deterministic).
+double RobustFittingResidualScale(const energy::Problem& problem, const energy::Variables& v);
+
+}  // namespace lpd::solvers
+
+#endif  // LPD_SOLVERS_RESIDUAL_STATISTICS_H_
