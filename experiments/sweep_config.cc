@@ -220,7 +220,8 @@ SweepConfig LoadSweepConfig(const std::string& path) {
   if (!root.IsMap()) Fail(path, 1, "a sweep config must be a mapping (name:, datasets:, ...)");
   CheckKeys(path, root, "the config",
             {"name", "repetitions", "seed", "parallel_cells", "threads_per_cell",
-             "ground_truth_samples", "feature_band", "datasets", "noise", "methods"});
+             "ground_truth_samples", "feature_band", "save_clouds", "datasets", "noise",
+             "methods"});
   SweepConfig config;
   config.path = path;
   config.name = root["name"] ? Scalar(path, root["name"], "name")
@@ -240,6 +241,14 @@ SweepConfig LoadSweepConfig(const std::string& path) {
   if (root["feature_band"]) {
     config.feature_band = Number(path, root["feature_band"], "feature_band");
     if (!(config.feature_band > 0.0)) Fail(path, Line(root["feature_band"]), "feature_band must be > 0");
+  }
+
+  if (root["save_clouds"]) {
+    const std::string text = Scalar(path, root["save_clouds"], "save_clouds");
+    if (text != "true" && text != "false") {
+      Fail(path, Line(root["save_clouds"]), "save_clouds must be true or false, got '" + text + "'");
+    }
+    config.save_clouds = text == "true";
   }
 
   const YAML::Node datasets = root["datasets"];

@@ -47,6 +47,9 @@ struct SweepConfig {
   int threads_per_cell = 0;  // 0: the available threads divided among the parallel cells
   int ground_truth_samples = 200000;
   double feature_band = 0.01;  // fraction of the diagonal around sharp edges
+  // Write every cell's input (with its indicators) and output (with its distance to the
+  // ground truth) as PLY to RESULTS/clouds/, for renderings (paper_figures/render_clouds.py).
+  bool save_clouds = false;
   std::vector<DatasetConfig> datasets;
   std::vector<ParameterSet> noise;     // the expanded noise grid (one empty set if none)
   std::vector<MethodConfig> methods;   // the expanded method grids

@@ -61,6 +61,7 @@ MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
   run.energy_trace.emplace_back(0.0, run.initial_energy);
   for (const solvers::IterationRecord& record : summary.iterations) {
     run.energy_trace.emplace_back(record.elapsed_seconds, record.energy.total());
+    run.energy_terms.push_back(record.energy);
     run.local_seconds += record.local_seconds / summary.iterations.size();
     run.global_seconds += record.global_seconds / summary.iterations.size();
   }
@@ -68,6 +69,7 @@ MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
     run.local_seconds = NAN;
     run.global_seconds = NAN;
   }
+  run.mu_l = summary.mu_l;
   run.termination = solvers::TerminationTypeName(summary.termination);
   run.note = result.removal_note;
   return run;

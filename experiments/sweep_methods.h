@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "energy/energy.h"
 #include "energy/normalization.h"
 #include "experiments/sweep_config.h"
 
@@ -28,6 +29,9 @@ struct MethodRun {
   double final_energy = NAN;
   // (elapsed seconds, total energy of Eq. 5) at the start and after every iteration.
   std::vector<std::pair<double, double>> energy_trace;
+  // The energy per term after every iteration.
+  std::vector<energy::EnergyBreakdown> energy_terms;
+  double mu_l = NAN;                   // the mu_l used (scale-aware or as given)
   double seconds = 0.0;                // whole method, setup included
   double setup_seconds = 0.0;          // normalization and k-NN graph
   double local_seconds = 0.0;          // per outer iteration, mean

@@ -5,6 +5,7 @@
 #include <cinttypes>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -112,6 +113,41 @@ std::string EnergyTraceText(const std::vector<std::pair<double, double>>& trace)
   return text;
 }
 
+// "fitting:smoothness:stitching" per iteration, separated by spaces (JSONL only).
+std::string EnergyTermsText(const std::vector<energy::EnergyBreakdown>& terms) {
+  std::string text;
+  char triple[96];
+  for (const energy::EnergyBreakdown& energy : terms) {
+    std::snprintf(triple, sizeof(triple), "%s%.8e:%.8e:%.8e", text.empty() ? "" : " ",
+                  energy.fitting, energy.smoothness, energy.stitching);
+    text += triple;
+  }
+  return text;
+}
+
+// RESULTS/clouds/ID_input.ply (the noisy input with the method's indicators and the true
+// outlier labels) and ID_output.ply (the output with its distance to the clean surface).
+void SaveClouds(const std::string& directory, const std::string& cell_id,
+                const CellInput& input, const MethodRun& run, const GroundTruth* truth,
+                int num_threads) {
+  const std::string clouds = directory + "/clouds";
+  std::filesystem::create_directories(clouds);
+  auto as_float = [](const auto& values) { return std::vector<float>(values.begin(), values.end()); };
+  PointCloud noisy;
+  noisy.points = input.points;
+  if (!run.outlier_flags.empty()) noisy.scalars.emplace_back("outlier", as_float(run.outlier_flags));
+  if (!run.feature_flags.empty()) noisy.scalars.emplace_back("feature", as_float(run.feature_flags));
+  if (!input.is_outlier.empty()) noisy.scalars.emplace_back("true_outlier", as_float(input.is_outlier));
+  WritePointCloud(clouds + "/" + cell_id + "_input.ply", noisy, /*overwrite=*/true);
+  PointCloud output;
+  output.points = run.output;
+  if (truth && truth->surface_distances) {
+    output.scalars.emplace_back("distance",
+                                as_float(truth->surface_distances(run.output, num_threads)));
+  }
+  WritePointCloud(clouds + "/" + cell_id + "_output.ply", output, /*overwrite=*/true);
+}
+
 ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
                      const LoadedDataset& loaded, int num_threads,
                      const SweepRunOptions& options, const std::string& machine) {
@@ -166,6 +202,11 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
   record.Add("initial_energy", run.initial_energy);
   record.Add("final_energy", run.final_energy);
   record.Add("energy_trace", EnergyTraceText(run.energy_trace));
+  record.Add("energy_terms_trace", EnergyTermsText(run.energy_terms));
+  record.Add("mu_l_used", run.mu_l);
+  if (config.save_clouds) {
+    SaveClouds(options.results_directory, cell.id, input, run, truth, num_threads);
+  }
   record.Add("termination", run.termination);
   record.Add("note", run.note);
   record.Add("seconds", run.seconds);
@@ -236,7 +277,7 @@ const std::vector<std::string>& ResultColumns() {
         "cell_id", "config", "dataset", "repetition", "num_input", "noise_model", "noise_sigma",
         "noise_scale", "noise_scale_length", "noise_sigma_absolute", "num_outliers", "method",
         "method_parameters"};
-    for (const char* name : {"k", "lambda", "eta", "mu_l", "mu_m", "max_iters",
+    for (const char* name : {"k", "lambda", "eta", "mu_l", "mu_l_used", "mu_m", "max_iters",
                                     "inner_iters"}) {
       list.push_back(name);
     }
