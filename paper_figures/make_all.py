@@ -333,6 +333,11 @@ def main():
            quality + [("feature precision", "feature_precision", 1, 3),
                       ("feature recall", "feature_recall", 1, 3)],
            group=lambda r: "cone")
+    import ablation_figures
+    import render_clouds
+    ablation_figures.make_ablations(args.results, args.out)
+    for name in ["fig4_orientations", "fig6_indicators"]:
+        render_clouds.render_config(name, args.results, args.out)
     return 0
 
 

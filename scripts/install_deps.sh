@@ -7,7 +7,7 @@ packages=(
   build-essential cmake git pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   libnanoflann-dev libgtest-dev libbenchmark-dev libcgal-dev libyaml-cpp-dev
-  python3 python3-matplotlib time
+  python3 python3-matplotlib python3-numpy time
 )
 
 missing=()
