@@ -35,7 +35,7 @@ def value(record, key, scale=1.0, digits=3):
     return f"{v / scale:.{digits}f}" if digits else f"{v / scale:.0f}"
 
 
-def comparison_table(results, name, title, metrics, note="", extra=lambda r: []):
+def comparison_table(results, out, name, title, metrics, note=""):
     """One row per (dataset, noise, method) with `metrics`."""
     rows = records(results, name)
     if rows is None:
@@ -44,15 +44,11 @@ def comparison_table(results, name, title, metrics, note="", extra=lambda r: [])
                              str(r.get("noise_description", r.get("num_outliers"))),
                              r["method"] != "none", common.natural(label(r))))
     body = [[r["dataset"], value(r, "noise_sigma"), value(r, "num_outliers", 1, 0), label(r)] +
-            [value(r, key, scale, digits) for _, key, scale, digits in metrics] + extra(r)
+            [value(r, key, scale, digits) for _, key, scale, digits in metrics]
             for r in rows]
     columns = ["model", "noise", "outliers", "method"] + [m[0] for m in metrics]
     text = common.header(rows, title, name) + note + table(columns, body)
-    write(common_out[0], name, text)
-    return rows
-
-
-common_out = [None]  # the output directory, set by make_ablations
+    write(out, name, text)
 
 
 def fig5_energy(results, out):
@@ -168,26 +164,24 @@ def ablation_gnc(results, out):
 
 
 def make_ablations(results, out):
-    common_out[0] = out
     fig5_energy(results, out)
     fig9_parameters(results, out)
     ablation_gnc(results, out)
-    comparison_table(results, "fig4_orientations", "Fig. 4: s_ij optimized against held at 1",
+    comparison_table(results, out, "fig4_orientations", "Fig. 4: s_ij optimized against held at 1",
                      QUALITY + [("mean distance (1e-3)", "mean_distance_normalized", 1e-3, 3),
                                 ("feature precision", "feature_precision", 1, 3),
-                                ("feature recall", "feature_recall", 1, 3)] + RUN,
-                     extra=lambda r: [])
-    comparison_table(results, "ablation_mu_l", "Scale-aware mu_l against the fixed 5e-9",
+                                ("feature recall", "feature_recall", 1, 3)] + RUN)
+    comparison_table(results, out, "ablation_mu_l", "Scale-aware mu_l against the fixed 5e-9",
                      QUALITY + [("mu_l used", "mu_l_used", 1e-6, 3),
                                 ("outlier precision", "outlier_precision", 1, 3),
                                 ("outlier recall", "outlier_recall", 1, 3),
                                 ("points out", "num_output", 1, 0)] + RUN,
                      note="mu_l used in units of 1e-6 (the fixed default is 0.005).\n\n")
-    comparison_table(results, "ablation_schedule",
+    comparison_table(results, out, "ablation_schedule",
                      "Schedule and initialization ablations of Alg. 1",
                      QUALITY + [("mean distance (1e-3)", "mean_distance_normalized", 1e-3, 3)] +
                      RUN)
-    comparison_table(results, "fig6_indicators", "Figs. 6, 7, 15: indicators and error maps",
+    comparison_table(results, out, "fig6_indicators", "Figs. 6, 7, 15: indicators and error maps",
                      QUALITY + [("outlier precision", "outlier_precision", 1, 3),
                                 ("outlier recall", "outlier_recall", 1, 3),
                                 ("feature precision", "feature_precision", 1, 3),
