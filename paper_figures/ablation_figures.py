@@ -6,10 +6,9 @@ writes out/<config>.md (and .png); a config without results is skipped with a me
 import json
 import math
 import os
-from collections import defaultdict
 
 import make_all as common
-from make_all import fmt, label, number, plt, table, write, save_plot
+from make_all import label, plt, save_plot, table, write
 
 QUALITY = [("MSE (1e-5)", "mse_normalized", 1e-5, 3),
            ("MCD (1e-3)", "mcd_normalized", 1e-3, 3)]
