@@ -147,15 +147,13 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   if (!use_default && FLAGS_output.empty() && FLAGS_save_state.empty()) {
     throw std::invalid_argument("missing output file: give -o OUTPUT (or --save_state)");
   }
-  std::vector<std::string> given_paths = arguments;
-  if (resume) given_paths.push_back(FLAGS_resume);
-  for (const std::string& path : given_paths) {
-    for (const std::string& output : {FLAGS_output, FLAGS_save_state}) {
-      if (output == path && !(output == FLAGS_resume && FLAGS_overwrite)) {
-        throw std::invalid_argument("output " + output +
-                                    " is also an input (refusing to overwrite it)");
-      }
-    }
+  // No output replaces an input, except that --overwrite lets --save_state update the state
+  // it resumed from.
+  const std::string input = resume ? FLAGS_resume : arguments.empty() ? "" : arguments[0];
+  const bool updates_state = resume && FLAGS_save_state == FLAGS_resume && FLAGS_overwrite;
+  if (!input.empty() &&
+      (FLAGS_output == input || (FLAGS_save_state == input && !updates_state))) {
+    throw std::invalid_argument("output " + input + " is also an input (refusing to overwrite it)");
   }
   if (!FLAGS_output.empty() && FLAGS_output == FLAGS_save_state) {
     throw std::invalid_argument("-o and --save_state name the same file");
