@@ -207,6 +207,11 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
       state.order.size(), cloud.points.size(), result.num_outliers, result.num_removed,
       result.num_features, result.summary.num_iterations, result.total_seconds,
       result.setup_seconds);
+  if (options.final_step.snap_features) {
+    std::printf("feature points snapped: %d onto edges, %d at corners, %d left on their plane\n",
+                result.snapping.snapped_to_edge, result.snapping.snapped_at_corner,
+                result.snapping.left_on_plane);
+  }
   if (use_default) {
     const double diagonal = default_input.diagonal;
     const double before = MeanDistance(default_input.shape, default_input.points);

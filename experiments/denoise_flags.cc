@@ -75,6 +75,15 @@ DEFINE_double(feature_fraction, 0.7, "share of feature votes above which i is a 
 DEFINE_bool(remove_outliers, true, "drop points flagged as outliers from the output");
 DEFINE_double(max_removed_fraction, 0.5,
               "keep all points (and say so) if more than this share is flagged as outliers");
+DEFINE_bool(snap_features, false,
+            "feature improvement (Sec. 3.4): move feature points onto the intersection line "
+            "of the two DBSCAN clusters of their neighbours' planes t_j");
+DEFINE_double(snap_cluster_angle_deg, 10.0,
+              "DBSCAN radius of --snap_features: neighbouring planes whose normals are at most "
+              "this many degrees apart are close");
+DEFINE_int32(snap_min_cluster_planes, 4,
+             "DBSCAN density of --snap_features: planes within the radius (itself included) "
+             "that make a core plane");
 
 namespace lpd::experiments {
 

@@ -169,6 +169,11 @@ const std::vector<Parameter>& Parameters() {
       Flag("remove_outliers", kBoth, [](O& o) -> bool& { return o.final_step.remove_outliers; }),
       Number("max_removed_fraction", kBoth,
              [](O& o) -> double& { return o.final_step.max_removed_fraction; }),
+      Flag("snap_features", kBoth, [](O& o) -> bool& { return o.final_step.snap_features; }),
+      Number("snap_cluster_angle_deg", kBoth,
+             [](O& o) -> double& { return o.final_step.snapping.cluster_angle_deg; }),
+      Integer("snap_min_cluster_planes", kBoth,
+              [](O& o) -> int& { return o.final_step.snapping.min_cluster_planes; }),
   };
   return parameters;
 }

@@ -113,6 +113,10 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   result.setup_seconds = state.setup_seconds;
   ProjectOntoTangentPlanes(problem, state.variables, &result.projected, &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, options.final_step);
+  if (options.final_step.snap_features) {
+    result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
+                                        options.final_step.snapping, &result.projected);
+  }
   for (auto* values : {&result.projected, &result.normals}) *values = ToInputOrder(*values, order);
   PointIndicators& indicators = result.indicators;
   indicators.outlier_score = ToInputOrder(indicators.outlier_score, order);

@@ -57,6 +57,7 @@ struct DenoiseResult {
   int num_outliers = 0;              // flagged by the indicator
   int num_removed = 0;               // actually removed
   int num_features = 0;
+  SnappingCounts snapping;           // with final_step.snap_features
   std::string removal_note;          // why flagged outliers were kept, if they were
   SolverSummary summary;
   double setup_seconds = 0.0;        // normalization and k-NN graph

@@ -26,7 +26,7 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
   } else if (!InUnitInterval(max_removed_fraction)) {
     out << "max_removed_fraction must be in (0, 1], got " << max_removed_fraction;
   } else {
-    return true;
+    return snapping.IsValid(error);
   }
   *error = out.str();
   return false;

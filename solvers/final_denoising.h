@@ -19,6 +19,7 @@
 
 #include "energy/problem.h"
 #include "energy/variables.h"
+#include "solvers/feature_snapping.h"
 
 namespace lpd::solvers {
 
@@ -31,6 +32,9 @@ struct FinalDenoisingOptions {
   // Removal is skipped (and reported) when more than this share of all points is flagged:
   // then mu_l is below the noise level and the indicator no longer separates outliers.
   double max_removed_fraction = 0.5;
+  // The optional feature improvement of Sec. 3.4 (off by default, as in the paper's runs).
+  bool snap_features = false;
+  FeatureSnappingOptions snapping;
 
   bool IsValid(std::string* error) const;
 };
