@@ -34,7 +34,7 @@ struct DatasetConfig {
 };
 
 struct MethodConfig {
-  std::string method;        // "none" (the noisy input itself) or "lpd"
+  std::string method;        // a name of MethodNames() (sweep_methods.h)
   ParameterSet parameters;   // one point of the method's grid
 };
 

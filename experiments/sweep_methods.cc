@@ -1,9 +1,13 @@
 #include "experiments/sweep_methods.h"
 
 #include <algorithm>
+#include <chrono>
+#include <functional>
 #include <stdexcept>
 
+#include "experiments/cgal_baselines.h"
 #include "experiments/denoise_parameters.h"
+#include "experiments/method_parameters.h"
 #include "solvers/denoise_point_set.h"
 
 namespace lpd::experiments {
@@ -75,10 +79,48 @@ MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
   return run;
 }
 
+// A CGAL baseline with its options read from `method` (effective values in `values`).
+// Null for a method that is not a baseline.
+using Smoother = std::function<energy::PointList(const energy::PointList&)>;
+
+Smoother Baseline(const MethodConfig& method,
+                  std::vector<std::pair<std::string, std::string>>* values) {
+  MethodParameters parameters(method);
+  Smoother smooth;
+  if (method.method == "bilateral") {
+    BilateralOptions options;
+    options.k = parameters.Integer("k", options.k, 3);
+    options.sharpness_angle_deg =
+        parameters.Number("sharpness_angle", options.sharpness_angle_deg, 0.1, 89.9);
+    options.iterations = parameters.Integer("iterations", options.iterations, 1);
+    options.normals = ParseNormalEstimator(
+        parameters.Choice("normals", ToString(options.normals), {"pca", "jet"}));
+    smooth = [options](const energy::PointList& input) { return BilateralSmooth(input, options); };
+  } else if (method.method == "jet") {
+    JetOptions options;
+    options.k = parameters.Integer("k", options.k, 6);
+    options.iterations = parameters.Integer("iterations", options.iterations, 1);
+    smooth = [options](const energy::PointList& input) { return JetSmooth(input, options); };
+  } else if (method.method == "wlop") {
+    WlopOptions options;
+    options.select_percentage =
+        parameters.Number("select_percentage", options.select_percentage, 0.1, 100.0);
+    options.radius_spacings =
+        parameters.Number("radius_spacings", options.radius_spacings, 0.1, 100.0);
+    options.iterations = parameters.Integer("iterations", options.iterations, 1);
+    smooth = [options](const energy::PointList& input) { return WlopResample(input, options); };
+  } else {
+    return nullptr;
+  }
+  *values = parameters.Finish();
+  return smooth;
+}
+
 }  // namespace
 
 const std::vector<std::string>& MethodNames() {
-  static const std::vector<std::string> names = {"none", "lpd", "ceres"};
+  static const std::vector<std::string> names = {"none", "lpd", "ceres", "bilateral", "jet",
+                                                 "wlop"};
   return names;
 }
 
@@ -98,9 +140,10 @@ std::vector<std::pair<std::string, std::string>> EffectiveParameters(
         values.emplace_back(name, GetDenoiseParameter(name, options));
       }
     }
-  } else {
-    throw std::invalid_argument("unknown method '" + method.method +
-                                "' (known: none, lpd, ceres)");
+  } else if (!Baseline(method, &values)) {
+    std::string known;
+    for (const std::string& name : MethodNames()) known += (known.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("unknown method '" + method.method + "' (known: " + known + ")");
   }
   return values;
 }
@@ -110,7 +153,15 @@ MethodRun RunMethod(const MethodConfig& method, const energy::PointList& input, 
   if (DenoiseSolver(method.method, &solver)) return RunDenoiser(method, solver, input, num_threads);
   EffectiveParameters(method);  // validates
   MethodRun run;
-  run.output = input;
+  std::vector<std::pair<std::string, std::string>> values;
+  if (const Smoother smooth = Baseline(method, &values)) {
+    const auto start = std::chrono::steady_clock::now();
+    run.output = smooth(input);
+    run.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  } else {
+    run.output = input;
+  }
   return run;
 }
 

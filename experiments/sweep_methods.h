@@ -4,6 +4,11 @@
 //   lpd    the paper's method (DenoisePointSet, Alg. 1); parameters as in denoise_parameters.h
 //   ceres  the same energy minimized jointly by Ceres (the validation baseline), followed by
 //          the same final step; the parameters that apply to the joint solve
+//   bilateral  CGAL bilateral smoothing with estimated normals (cgal_baselines.h):
+//              k=60, sharpness_angle=25 (degrees), iterations=3, normals=pca|jet
+//   jet        CGAL jet smoothing: k=32, iterations=1
+//   wlop       CGAL WLOP resampling: select_percentage=20, radius_spacings=8, iterations=35
+// The baselines run on one thread (Debian's CGAL has no TBB).
 #ifndef LPD_EXPERIMENTS_SWEEP_METHODS_H_
 #define LPD_EXPERIMENTS_SWEEP_METHODS_H_
 

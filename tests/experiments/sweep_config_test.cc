@@ -86,6 +86,22 @@ TEST(SweepConfig, ErrorsNameTheLineAndTheKey) {
   EXPECT_NE(LoadError("datasets:\n  - shape: cube\nmethods:\n  - method: magic\n")
                 .find(":4: unknown method 'magic'"),
             std::string::npos);
+  // Baseline parameters are checked the same way (method_parameters.h).
+  const std::string bilateral = "datasets:\n  - shape: cube\nmethods:\n  - method: bilateral\n";
+  EXPECT_NE(LoadError(bilateral + "    radius: 3\n")
+                .find(":5: unknown parameter 'radius' of method bilateral (known: iterations, k, "
+                      "normals, sharpness_angle)"),
+            std::string::npos);
+  EXPECT_NE(LoadError(bilateral + "    normals: vcm\n")
+                .find(":5: parameter normals of method bilateral: 'vcm' is not one of pca, jet"),
+            std::string::npos);
+  EXPECT_NE(LoadError(bilateral + "    sharpness_angle: 95\n")
+                .find("parameter sharpness_angle of method bilateral: '95' is not a number in "
+                      "[0.1, 89.9]"),
+            std::string::npos);
+  EXPECT_NE(LoadError("datasets:\n  - shape: cube\nmethods:\n  - method: jet\n    k: 2.5\n")
+                .find(":5: parameter k of method jet: '2.5' is not an integer >= 6"),
+            std::string::npos);
   EXPECT_NE(LoadError("datasets: []\nmethods:\n  - method: none\n")
                 .find(":1: 'datasets' must be a non-empty list"),
             std::string::npos);
