@@ -12,6 +12,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments);
 int RunMetricsCommand(const std::vector<std::string>& arguments);
 int RunBenchCommand(const std::vector<std::string>& arguments);
 int RunNoiseCommand(const std::vector<std::string>& arguments);
+int RunReconstructCommand(const std::vector<std::string>& arguments);
 int RunSweepCommand(const std::vector<std::string>& arguments);
 
 }  // namespace lpd::experiments

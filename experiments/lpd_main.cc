@@ -41,6 +41,11 @@ const std::map<std::string, Command>& Commands() {
         "sample --shape or --mesh (or read INPUT), add seeded noise and labelled outliers",
         {"noise_command.cc", "denoise_command.cc:output", "denoise_command.cc:overwrite",
          "denoise_command.cc:seed"}}},
+      {"reconstruct",
+       {lpd::experiments::RunReconstructCommand, "lpd reconstruct INPUT -o MESH.off [flags]",
+        "interpolating surface (Advancing Front or Scale Space, CGAL) through a point set, "
+        "as OFF or PLY",
+        {"reconstruct_command.cc", "denoise_command.cc:output", "denoise_command.cc:overwrite"}}},
       {"bench",
        {lpd::experiments::RunBenchCommand, "lpd bench INPUT [flags]",
         "time every outer iteration of Alg. 1 on INPUT and report peak memory",

@@ -220,8 +220,8 @@ SweepConfig LoadSweepConfig(const std::string& path) {
   if (!root.IsMap()) Fail(path, 1, "a sweep config must be a mapping (name:, datasets:, ...)");
   CheckKeys(path, root, "the config",
             {"name", "repetitions", "seed", "parallel_cells", "threads_per_cell",
-             "ground_truth_samples", "feature_band", "save_clouds", "datasets", "noise",
-             "methods"});
+             "ground_truth_samples", "feature_band", "save_clouds", "reconstructions",
+             "datasets", "noise", "methods"});
   SweepConfig config;
   config.path = path;
   config.name = root["name"] ? Scalar(path, root["name"], "name")
@@ -249,6 +249,21 @@ SweepConfig LoadSweepConfig(const std::string& path) {
       Fail(path, Line(root["save_clouds"]), "save_clouds must be true or false, got '" + text + "'");
     }
     config.save_clouds = text == "true";
+  }
+
+  if (const YAML::Node reconstructions = root["reconstructions"]) {
+    if (!reconstructions.IsSequence()) {
+      Fail(path, Line(reconstructions), "'reconstructions' must be a list (advancing_front, "
+                                        "scale_space)");
+    }
+    for (const YAML::Node& node : reconstructions) {
+      try {
+        config.reconstructions.push_back(
+            ParseReconstruction(Scalar(path, node, "reconstructions")));
+      } catch (const std::invalid_argument& error) {
+        Fail(path, Line(node), error.what());
+      }
+    }
   }
 
   const YAML::Node datasets = root["datasets"];

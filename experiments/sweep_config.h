@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "experiments/noise.h"
+#include "experiments/surface_reconstruction.h"
 
 namespace lpd::experiments {
 
@@ -50,6 +51,9 @@ struct SweepConfig {
   // Write every cell's input (with its indicators) and output (with its distance to the
   // ground truth) as PLY to RESULTS/clouds/, for renderings (paper_figures/render_clouds.py).
   bool save_clouds = false;
+  // Surfaces reconstructed from every cell's output (surface_reconstruction.h), written to
+  // RESULTS/meshes/ID_METHOD.off for renderings (paper_figures/render_meshes.py).
+  std::vector<Reconstruction> reconstructions;
   std::vector<DatasetConfig> datasets;
   std::vector<ParameterSet> noise;     // the expanded noise grid (one empty set if none)
   std::vector<MethodConfig> methods;   // the expanded method grids

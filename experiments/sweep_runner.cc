@@ -18,6 +18,7 @@
 #include "experiments/shape_catalog.h"
 #include "experiments/sweep_methods.h"
 #include "experiments/sweep_results.h"
+#include "experiments/surface_reconstruction.h"
 #include "experiments/triangle_mesh.h"
 
 namespace lpd::experiments {
@@ -148,6 +149,32 @@ void SaveClouds(const std::string& directory, const std::string& cell_id,
   WritePointCloud(clouds + "/" + cell_id + "_output.ply", output, /*overwrite=*/true);
 }
 
+// Reconstructs the cell's output with every method of `config.reconstructions` and records
+// the seconds taken and any error (a failed reconstruction does not fail the cell).
+void SaveMeshes(const SweepConfig& config, const std::string& directory,
+                const std::string& cell_id, const MethodRun& run, ResultRecord* record) {
+  const std::string meshes = directory + "/meshes";
+  std::filesystem::create_directories(meshes);
+  for (const Reconstruction method : config.reconstructions) {
+    const std::string name = ToString(method);
+    ReconstructionOptions options;
+    options.method = method;
+    const auto start = std::chrono::steady_clock::now();
+    std::string error;
+    try {
+      WriteTriangleMesh(meshes + "/" + cell_id + "_" + name + ".off",
+                        ReconstructSurface(run.output, options), /*overwrite=*/true);
+    } catch (const std::exception& failure) {
+      error = failure.what();
+    }
+    record->Add(name + "_seconds",
+                error.empty() ? std::chrono::duration<double>(
+                                    std::chrono::steady_clock::now() - start).count()
+                              : NAN);
+    record->Add(name + "_error", error);
+  }
+}
+
 ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
                      const LoadedDataset& loaded, int num_threads,
                      const SweepRunOptions& options, const std::string& machine) {
@@ -207,6 +234,7 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
   if (config.save_clouds) {
     SaveClouds(options.results_directory, cell.id, input, run, truth, num_threads);
   }
+  SaveMeshes(config, options.results_directory, cell.id, run, &record);
   record.Add("termination", run.termination);
   record.Add("note", run.note);
   record.Add("seconds", run.seconds);

@@ -1,11 +1,36 @@
 #include "experiments/triangle_mesh.h"
 
+#include <limits>
 #include <random>
 #include <stdexcept>
+
+#include "experiments/atomic_output_file.h"
+#include "experiments/point_cloud_io.h"
 
 namespace lpd::experiments {
 
 using energy::Point3;
+
+void WriteTriangleMesh(const std::string& path, const TriangleMesh& mesh, bool overwrite) {
+  const std::string extension = FileExtension(path);
+  if (extension != "off" && extension != "ply") {
+    throw std::runtime_error("cannot write '" + path +
+                             "': the mesh extension must be .off or .ply");
+  }
+  AtomicOutputFile file(path, overwrite);
+  std::ofstream& out = file.stream();
+  out.precision(std::numeric_limits<double>::max_digits10);
+  if (extension == "off") {
+    out << "OFF\n" << mesh.vertices.size() << " " << mesh.triangles.size() << " 0\n";
+  } else {
+    out << "ply\nformat ascii 1.0\nelement vertex " << mesh.vertices.size()
+        << "\nproperty double x\nproperty double y\nproperty double z\nelement face "
+        << mesh.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  }
+  for (const Point3& v : mesh.vertices) out << v.x() << " " << v.y() << " " << v.z() << "\n";
+  for (const auto& t : mesh.triangles) out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  file.Commit();
+}
 
 SurfaceSamples SampleTriangleMesh(const TriangleMesh& mesh, int count, uint64_t seed) {
   if (count < 0) throw std::invalid_argument("sample count must be >= 0");

@@ -22,6 +22,11 @@ struct TriangleMesh {
 // faces. Implemented with CGAL in its own translation unit (mesh_io.cc).
 TriangleMesh ReadTriangleMesh(const std::string& path);
 
+// Writes OFF or ASCII PLY, chosen by the extension (.off, .ply), through AtomicOutputFile:
+// the file appears only complete, and an existing file is refused unless `overwrite`.
+// Throws std::runtime_error on another extension or a write error.
+void WriteTriangleMesh(const std::string& path, const TriangleMesh& mesh, bool overwrite);
+
 // `count` samples drawn uniformly by area (a triangle is picked with probability proportional
 // to its area, then a uniform point in it), with the unit normal of their triangle. The same
 // (count, seed) always gives the same samples. Throws if the mesh has zero area.
