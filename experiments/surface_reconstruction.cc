@@ -10,10 +10,27 @@
 #include <CGAL/Scale_space_reconstruction_3/Jet_smoother.h>
 #include <CGAL/Scale_space_surface_reconstruction_3.h>
 
+#include <Eigen/Eigenvalues>
+
 #include "experiments/cgal_points.h"
 
 namespace lpd::experiments {
 namespace {
+
+// Points along one line (or all at one place) span no surface, and CGAL's Delaunay-based
+// meshers fail on them without a clean error: true when the covariance's second eigenvalue
+// vanishes next to its largest.
+bool SpanAtMostALine(const energy::PointList& points) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const energy::Point3& p : points) mean += p;
+  mean /= points.size();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const energy::Point3& p : points) covariance += (p - mean) * (p - mean).transpose();
+  const Eigen::Vector3d eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance, Eigen::EigenvaluesOnly)
+          .eigenvalues();  // increasing
+  return !(eigenvalues(1) > 1e-12 * eigenvalues(2));
+}
 
 using Facet = std::array<std::size_t, 3>;
 
@@ -55,6 +72,9 @@ TriangleMesh ReconstructSurface(const energy::PointList& points,
   if (points.size() < 4) {
     throw std::invalid_argument("reconstruction needs at least 4 points, got " +
                                 std::to_string(points.size()));
+  }
+  if (SpanAtMostALine(points)) {
+    throw std::invalid_argument("the points are collinear or coincide: no surface through them");
   }
   if (options.scale_iterations < 0) {
     throw std::invalid_argument("scale_iterations must be >= 0");

@@ -28,8 +28,8 @@ struct ReconstructionOptions {
   int scale_iterations = 4;  // scale_space: smoothing passes (CGAL's example uses 4)
 };
 
-// Throws std::invalid_argument on fewer than 4 points or bad options, std::runtime_error if
-// no triangle could be made.
+// Throws std::invalid_argument on fewer than 4 points, collinear or coincident points or bad
+// options, std::runtime_error if no triangle could be made.
 TriangleMesh ReconstructSurface(const energy::PointList& points,
                                 const ReconstructionOptions& options);
 

@@ -70,7 +70,10 @@ def best_cells(records):
     rows = {}
     for record in records:
         sigma = record.get("noise_sigma")
-        key = (record["dataset"], "as_given" if sigma is None else str(sigma))
+        noise = "as_given" if sigma is None else str(sigma)
+        if record.get("num_outliers"):
+            noise += f"_{record['num_outliers']}_outliers"
+        key = (record["dataset"], noise)
         method = record["method"]
         mse = record.get("mse_normalized")
         mse = math.inf if mse is None else float(mse)

@@ -82,6 +82,8 @@ expect_error schedule_with_ceres "$dir/good.xyz" --solver=ceres --inner_iters=3
 expect_error ceres_flag_with_alternating "$dir/good.xyz" --ceres_max_iters=3
 expect_error zero_ceres_seconds "$dir/good.xyz" --solver=ceres --ceres_max_seconds=0
 
+expect_error snap_angle_zero "$dir/good.xyz" --snap_features --snap_cluster_angle_deg=0
+expect_error snap_min_planes_zero "$dir/good.xyz" --snap_features --snap_min_cluster_planes=0
 expect_finite collinear "$dir/collinear.xyz"
 expect_finite coplanar "$dir/coplanar.xyz"
 expect_finite duplicates "$dir/duplicates.xyz"
@@ -121,4 +123,31 @@ if "$lpd" denoise --resume="$dir/state.lpds" --save-state="$dir/state_copy.lpds"
 fi
 cmp -s "$dir/state.lpds" "$dir/state_copy.lpds" || fail "an existing state file was modified"
 
+# lpd reconstruct: bad input gives one error line, a non-zero exit and no mesh file.
+expect_reconstruct_error() {
+  local name=$1; shift
+  "$lpd" reconstruct "$@" >"$dir/stdout" 2>"$dir/stderr"
+  local code=$?
+  [ "$code" -ne 0 ] || fail "reconstruct $name: exit code 0"
+  [ "$(wc -l <"$dir/stderr")" -eq 1 ] || fail "reconstruct $name: $(cat "$dir/stderr")"
+  ls "$dir" | grep -q "mesh_$name" && fail "reconstruct $name: output file left behind"
+  echo "ok   reconstruct $name: $(cat "$dir/stderr")"
+}
+expect_reconstruct_error missing_file "$dir/none.xyz" -o "$dir/mesh_missing_file.off"
+expect_reconstruct_error no_output "$dir/good.xyz"
+expect_reconstruct_error nan "$dir/nan.xyz" -o "$dir/mesh_nan.off"
+expect_reconstruct_error unknown_method "$dir/good.xyz" -o "$dir/mesh_unknown_method.off" \
+  --reconstruction=poisson
+expect_reconstruct_error bad_extension "$dir/good.xyz" -o "$dir/mesh_bad_extension.stl"
+expect_reconstruct_error collinear "$dir/collinear.xyz" -o "$dir/mesh_collinear.off"
+expect_reconstruct_error coincident "$dir/same.xyz" -o "$dir/mesh_coincident.off" \
+  --reconstruction=scale_space
+head -3 "$dir/good.xyz" >"$dir/three.xyz"
+expect_reconstruct_error three_points "$dir/three.xyz" -o "$dir/mesh_three_points.off"
+"$lpd" reconstruct "$dir/good.xyz" -o "$dir/mesh.off" >/dev/null 2>"$dir/stderr" ||
+  fail "reconstruct failed: $(cat "$dir/stderr")"
+cp "$dir/mesh.off" "$dir/mesh_copy.off"
+"$lpd" reconstruct "$dir/good.xyz" -o "$dir/mesh.off" --reconstruction=scale_space \
+  >/dev/null 2>&1 && fail "reconstruct overwrote an existing mesh"
+cmp -s "$dir/mesh.off" "$dir/mesh_copy.off" || fail "reconstruct modified an existing mesh"
 finish "CLI checks"
