@@ -153,8 +153,8 @@ MethodRun RunMethod(const MethodConfig& method, const energy::PointList& input, 
   if (DenoiseSolver(method.method, &solver)) return RunDenoiser(method, solver, input, num_threads);
   EffectiveParameters(method);  // validates
   MethodRun run;
-  std::vector<std::pair<std::string, std::string>> values;
-  if (const Smoother smooth = Baseline(method, &values)) {
+  std::vector<std::pair<std::string, std::string>> unused_values;
+  if (const Smoother smooth = Baseline(method, &unused_values)) {
     const auto start = std::chrono::steady_clock::now();
     run.output = smooth(input);
     run.seconds =

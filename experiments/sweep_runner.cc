@@ -153,6 +153,7 @@ void SaveClouds(const std::string& directory, const std::string& cell_id,
 // the seconds taken and any error (a failed reconstruction does not fail the cell).
 void SaveMeshes(const SweepConfig& config, const std::string& directory,
                 const std::string& cell_id, const MethodRun& run, ResultRecord* record) {
+  if (config.reconstructions.empty()) return;
   const std::string meshes = directory + "/meshes";
   std::filesystem::create_directories(meshes);
   for (const Reconstruction method : config.reconstructions) {
