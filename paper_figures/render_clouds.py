@@ -71,13 +71,30 @@ def slug(text):
     return re.sub(r"[^A-Za-z0-9.=_-]+", "_", text).strip("_")
 
 
-def render_config(name, results, out):
+def read_records(results, name):
+    """The JSON records of results/NAME/results.jsonl, or None (with a message) if absent."""
     path = os.path.join(results, name, "results.jsonl")
     if not os.path.exists(path):
         print(f"skip renderings of {name}: no results in {path}")
-        return []
+        return None
     with open(path) as f:
-        records = [json.loads(line) for line in f if line.strip()]
+        return [json.loads(line) for line in f if line.strip()]
+
+
+def config_arguments(description):
+    """The command line shared by the rendering scripts: config names, --results, --out."""
+    parser = argparse.ArgumentParser(description=description)
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parser.add_argument("configs", nargs="+", help="config names (results/NAME)")
+    parser.add_argument("--results", default=os.path.join(root, "results"))
+    parser.add_argument("--out", default=os.path.join(root, "paper_figures", "out"))
+    return parser
+
+
+def render_config(name, results, out):
+    records = read_records(results, name)
+    if records is None:
+        return []
     clouds = os.path.join(results, name, "clouds")
     outputs = {r["cell_id"]: read_ply(os.path.join(clouds, r["cell_id"] + "_output.ply"))
                for r in records if os.path.exists(os.path.join(clouds, r["cell_id"] + "_output.ply"))}
@@ -136,12 +153,7 @@ def render_config(name, results, out):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    parser.add_argument("configs", nargs="+", help="config names (results/NAME)")
-    parser.add_argument("--results", default=os.path.join(root, "results"))
-    parser.add_argument("--out", default=os.path.join(root, "paper_figures", "out"))
-    args = parser.parse_args()
+    args = config_arguments(__doc__.splitlines()[0]).parse_args()
     os.makedirs(args.out, exist_ok=True)
     for name in args.configs:
         render_config(name, args.results, args.out)

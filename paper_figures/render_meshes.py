@@ -8,8 +8,6 @@ For every row of the config (dataset and noise), each method's best grid point b
 cell Table 1 reports) is drawn flat-shaded from one fixed viewpoint: one PNG per method and
 one with all methods of the row side by side. Needs python3-numpy and python3-matplotlib.
 """
-import argparse
-import json
 import math
 import os
 import sys
@@ -21,7 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
-from render_clouds import VIEW, set_axes_equal, slug  # noqa: E402
+from render_clouds import VIEW, config_arguments, read_records, set_axes_equal, slug  # noqa: E402
 
 BASE_COLOR = np.array([0.78, 0.80, 0.86])
 
@@ -94,12 +92,9 @@ def method_title(record):
 
 
 def render_config(name, results, out, reconstruction="advancing_front"):
-    path = os.path.join(results, name, "results.jsonl")
-    if not os.path.exists(path):
-        print(f"skip mesh renderings of {name}: no results in {path}")
+    records = read_records(results, name)
+    if records is None:
         return []
-    with open(path) as f:
-        records = [json.loads(line) for line in f if line.strip()]
     meshes = os.path.join(results, name, "meshes")
     order = ["none", "lpd", "ceres", "bilateral", "jet", "wlop"]
     written = []
@@ -137,11 +132,7 @@ def render_config(name, results, out, reconstruction="advancing_front"):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    parser.add_argument("configs", nargs="+", help="config names (results/NAME)")
-    parser.add_argument("--results", default=os.path.join(root, "results"))
-    parser.add_argument("--out", default=os.path.join(root, "paper_figures", "out"))
+    parser = config_arguments(__doc__.splitlines()[0])
     parser.add_argument("--reconstruction", default="advancing_front",
                         choices=["advancing_front", "scale_space"])
     args = parser.parse_args()
