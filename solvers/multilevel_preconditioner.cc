@@ -1,6 +1,7 @@
 #include "solvers/multilevel_preconditioner.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "energy/row_sum.h"
 
@@ -9,123 +10,162 @@ namespace {
 
 using Row = Eigen::Map<Eigen::Array4d>;
 using ConstRow = Eigen::Map<const Eigen::Array4d>;
+using Columns4 = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>;
+
+// Levels this small run on one thread: a parallel region would cost more than the work.
+int ThreadsFor(int size, int num_threads) { return size >= 4096 ? num_threads : 1; }
 
 }  // namespace
 
-MultilevelPreconditioner::MultilevelPreconditioner(int num_points, int branching,
-                                                   int max_levels)
-    : branching_(branching) {
-  level_sizes_.push_back(num_points);
-  while (level_sizes_.back() > 1 && static_cast<int>(level_sizes_.size()) < max_levels) {
-    level_sizes_.push_back((level_sizes_.back() + branching - 1) / branching);
+MultilevelPreconditioner::MultilevelPreconditioner(const CompressedRows& k,
+                                                   const MultilevelOptions& options,
+                                                   int num_threads)
+    : options_(options) {
+  if (options.aggregate_size < 2 || options.coarsest_size < 1 ||
+      !(options.jacobi_damping > 0.0 && options.jacobi_damping < 1.0)) {
+    throw std::invalid_argument("multilevel options: aggregate_size >= 2, coarsest_size >= 1 "
+                                "and jacobi_damping in (0, 1) are required");
   }
-  const int levels = num_levels();
-  flip_.resize(levels - 1);
-  inverse_diagonal_.resize(levels);
-  restricted_.resize(levels);
-  for (int l = 0; l < levels; ++l) {
-    if (l + 1 < levels) flip_[l].assign(level_sizes_[l], 1);
-    inverse_diagonal_[l].assign(level_sizes_[l], 0.0);
-    if (l > 0) restricted_[l].assign(4 * static_cast<size_t>(level_sizes_[l]), 0.0);
+  levels_.emplace_back();
+  levels_[0].size = k.num_rows();
+  while (levels_.back().size > options.coarsest_size) {
+    Level& fine = levels_.back();
+    fine.aggregates = ConsecutiveRuns(fine.size, options.aggregate_size);
+    Level coarse;
+    coarse.size = fine.aggregates.count;
+    coarse.matrix =
+        GalerkinPattern(levels_.size() == 1 ? k : fine.matrix, fine.aggregates, num_threads);
+    levels_.push_back(std::move(coarse));
+  }
+  for (size_t l = 0; l < levels_.size(); ++l) {
+    Level& level = levels_[l];
+    const size_t size = level.size;
+    level.inverse_diagonal.resize(size);
+    if (l + 1 < levels_.size()) level.to_parent.resize(size);
+    level.solution.resize(4 * size);
+    if (l > 0) {
+      level.rhs.resize(4 * size);
+      level.correction.resize(4 * size);
+    }
   }
 }
 
-void MultilevelPreconditioner::Update(const SymmetricRows& k,
-                                      const energy::PlaneField& field) {
-  const int levels = num_levels();
-  const int n = level_sizes_[0];
-  if (levels > 1) {
-    // Scales |t_i|, floored at 1e-3 of their mean so that no point drops out of the coarse
-    // levels (all 1 for a zero field).
-    scale_.resize(n);
-    double mean_norm = 0.0;
-    for (int i = 0; i < n; ++i) mean_norm += field.row(i).norm() / n;
-    for (int i = 0; i < n; ++i) {
-      scale_[i] = mean_norm > 0.0 ? std::max(field.row(i).norm(), 1e-3 * mean_norm) : 1.0;
-    }
-  }
-  // Orientations: each child joins its parent's running oriented sum of the field with the
-  // sign that agrees with it (the first child sets the parent's orientation).
+void MultilevelPreconditioner::UpdateProlongations(const energy::PlaneField& field,
+                                                   int num_threads) {
+  const int n = levels_[0].size;
+  // |t_i|, floored at 1e-3 of its mean so that no point drops out of the coarse levels (all
+  // 1 for a zero field).
+  const double mean_norm =
+      energy::SumOverRows(n, num_threads, 0.0, [&](int i, double* sum) {
+        *sum += field.row(i).norm();
+      }) / n;
+  // Each child joins its parent's running oriented sum of the field with the sign that agrees
+  // with it (the first child sets the parent's orientation); the sums orient the next level.
   std::vector<double> child_sum, parent_sum;
-  for (int l = 0; l + 1 < levels; ++l) {
+  for (int l = 0; l + 1 < num_levels(); ++l) {
+    Level& level = levels_[l];
+    const Aggregates& aggregates = level.aggregates;
     const double* children = l == 0 ? field.data() : child_sum.data();
-    parent_sum.assign(4 * static_cast<size_t>(level_sizes_[l + 1]), 0.0);
-    for (int c = 0; c < level_sizes_[l]; ++c) {
-      Row parent(parent_sum.data() + 4 * Parent(c));
-      const ConstRow child(children + 4 * c);
-      const signed char flip = (parent * child).sum() >= 0.0 ? 1 : -1;
-      flip_[l][c] = flip;
-      parent += flip * child;
+    parent_sum.resize(4 * static_cast<size_t>(aggregates.count));
+#pragma omp parallel for schedule(static) num_threads(ThreadsFor(level.size, num_threads))
+    for (int a = 0; a < aggregates.count; ++a) {
+      Eigen::Array4d sum = Eigen::Array4d::Zero();
+      for (int k = aggregates.child_offsets[a]; k < aggregates.child_offsets[a + 1]; ++k) {
+        const int c = aggregates.children[k];
+        const ConstRow child(children + 4 * c);
+        const double sign = (sum * child).sum() >= 0.0 ? 1.0 : -1.0;
+        sum += sign * child;
+        double magnitude = 1.0;
+        if (l == 0 && mean_norm > 0.0) magnitude = std::max(field.row(c).norm(), 1e-3 * mean_norm);
+        level.to_parent[c] = sign * magnitude;
+      }
+      Row(parent_sum.data() + 4 * a) = sum;
     }
     child_sum.swap(parent_sum);
   }
-  // D_l = diag(P_l^T K P_l): entry (i, j) of K adds sigma_l(i) sigma_l(j) K_ij to every level
-  // at which i and j share an aggregate. Once they share one the sign product stays fixed,
-  // so each entry is added once, at the level where i and j meet, and every level then
-  // inherits its children's sums.
-  // Accumulated in place, then inverted.
-  std::vector<std::vector<double>>& diagonal = inverse_diagonal_;
-  for (std::vector<double>& level : diagonal) std::fill(level.begin(), level.end(), 0.0);
-  for (int i = 0; i < n; ++i) {
-    for (int e = k.row_offsets[i]; e < k.row_offsets[i + 1]; ++e) {
-      int a = i, b = k.columns[e], l = 0;
-      // Diagonal entries: K_ii for Jacobi, |t_i|^2 K_ii from level 1 up.
-      if (a == b) {
-        diagonal[0][a] += k.values[e];
-        if (levels > 1) diagonal[1][Parent(a)] += scale_[a] * scale_[a] * k.values[e];
-        continue;
+}
+
+void MultilevelPreconditioner::Update(const CompressedRows& k, const energy::PlaneField& field,
+                                      int num_threads) {
+  if (k.num_rows() != levels_[0].size || field.rows() != levels_[0].size) {
+    throw std::invalid_argument("multilevel preconditioner: K or the field has the wrong size");
+  }
+  fine_ = &k;
+  UpdateProlongations(field, num_threads);
+  for (int l = 0; l < num_levels(); ++l) {
+    Level& level = levels_[l];
+    const CompressedRows& a = Matrix(l);
+    if (l + 1 < num_levels()) {
+      GalerkinValues(a, level.to_parent, level.aggregates, num_threads, &levels_[l + 1].matrix);
+    }
+#pragma omp parallel for schedule(static) num_threads(ThreadsFor(level.size, num_threads))
+    for (int i = 0; i < level.size; ++i) {
+      for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
+        if (a.columns[e] == i) level.inverse_diagonal[i] = 1.0 / a.values[e];
       }
-      if (levels == 1) continue;  // Jacobi: off-diagonal entries never share an aggregate
-      double sign = scale_[a] * scale_[b];
-      while (a != b && l + 1 < levels) {
-        sign *= flip_[l][a] * flip_[l][b];
-        a = Parent(a);
-        b = Parent(b);
-        ++l;
-      }
-      if (a == b) diagonal[l][a] += sign * k.values[e];
     }
   }
-  for (int l = 2; l < levels; ++l) {
-    for (int c = 0; c < level_sizes_[l - 1]; ++c) diagonal[l][Parent(c)] += diagonal[l - 1][c];
+  const Level& coarsest = levels_.back();
+  const CompressedRows& bottom = Matrix(num_levels() - 1);
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(coarsest.size, coarsest.size);
+  for (int a = 0; a < coarsest.size; ++a) {
+    for (int e = bottom.row_offsets[a]; e < bottom.row_offsets[a + 1]; ++e) {
+      dense(a, bottom.columns[e]) = bottom.values[e];
+    }
   }
-  for (std::vector<double>& level : diagonal) {
-    for (double& d : level) d = 1.0 / d;
+  coarsest_solver_.compute(dense);
+}
+
+void MultilevelPreconditioner::Cycle(int l, const double* b, int num_threads, double* out) {
+  Level& level = levels_[l];
+  if (l + 1 == num_levels()) {
+    Eigen::Map<Columns4>(out, level.size, 4) =
+        coarsest_solver_.solve(Eigen::Map<const Columns4>(b, level.size, 4));
+    return;
+  }
+  const double omega = options_.jacobi_damping;
+  const CompressedRows& a_l = Matrix(l);
+  const Aggregates& aggregates = level.aggregates;
+  double* x = level.solution.data();
+  const int threads = ThreadsFor(level.size, num_threads);
+  // Pre-smoothing from zero, x = S b, then P^T (b - A x) to the next level.
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int i = 0; i < level.size; ++i) {
+    Row(x + 4 * i) = omega * level.inverse_diagonal[i] * ConstRow(b + 4 * i);
+  }
+  Level& coarse = levels_[l + 1];
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int a = 0; a < coarse.size; ++a) {
+    Eigen::Array4d sum = Eigen::Array4d::Zero();
+    Eigen::Array4d product;
+    for (int k = aggregates.child_offsets[a]; k < aggregates.child_offsets[a + 1]; ++k) {
+      const int i = aggregates.children[k];
+      a_l.RowTimes(x, i, product.data());
+      sum += level.to_parent[i] * (ConstRow(b + 4 * i) - product);
+    }
+    Row(coarse.rhs.data() + 4 * a) = sum;
+  }
+  Cycle(l + 1, coarse.rhs.data(), num_threads, coarse.correction.data());
+  // x += P x_coarse, then post-smoothing x + S (b - A x).
+  const double* correction = coarse.correction.data();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int i = 0; i < level.size; ++i) {
+    Row(x + 4 * i) += level.to_parent[i] * ConstRow(correction + 4 * aggregates.parent[i]);
+  }
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int i = 0; i < level.size; ++i) {
+    Eigen::Array4d product;
+    a_l.RowTimes(x, i, product.data());
+    Row(out + 4 * i) =
+        ConstRow(x + 4 * i) + omega * level.inverse_diagonal[i] * (ConstRow(b + 4 * i) - product);
   }
 }
 
 Eigen::Array4d MultilevelPreconditioner::Apply(const double* r, int num_threads, double* z) {
-  const int levels = num_levels();
-  // Restriction P_l^T r, level by level: a parent sums its children's oriented residuals.
-  for (int l = 1; l < levels; ++l) {
-    const double* child = l == 1 ? r : restricted_[l - 1].data();
-    const int children = level_sizes_[l - 1];
-#pragma omp parallel for schedule(static) num_threads(num_threads)
-    for (int a = 0; a < level_sizes_[l]; ++a) {
-      Eigen::Array4d sum = Eigen::Array4d::Zero();
-      const int end = std::min(children, (a + 1) * branching_);
-      for (int c = a * branching_; c < end; ++c) {
-        sum += (l == 1 ? scale_[c] : 1.0) * flip_[l - 1][c] * ConstRow(child + 4 * c);
-      }
-      Row(restricted_[l].data() + 4 * a) = sum;
-    }
-  }
-  // Coarse corrections D_l^-1 P_l^T r, summed top-down into the finer levels.
-  for (int l = levels - 1; l >= 1; --l) {
-    for (int a = 0; a < level_sizes_[l]; ++a) {
-      Row correction(restricted_[l].data() + 4 * a);
-      correction *= inverse_diagonal_[l][a];
-      if (l + 1 < levels) {
-        correction += flip_[l][a] * Row(restricted_[l + 1].data() + 4 * Parent(a));
-      }
-    }
-  }
-  const int n = level_sizes_[0];
-  return energy::SumOverRows(n, num_threads, Eigen::Array4d::Zero().eval(), [&](int i, auto* sum) {
-    Eigen::Array4d z_i = inverse_diagonal_[0][i] * ConstRow(r + 4 * i);
-    if (levels > 1) z_i += scale_[i] * flip_[0][i] * Row(restricted_[1].data() + 4 * Parent(i));
-    Row(z + 4 * i) = z_i;
-    *sum += z_i * ConstRow(r + 4 * i);
+  Cycle(0, r, num_threads, z);
+  return energy::SumOverRows(levels_[0].size, num_threads, Eigen::Array4d::Zero().eval(),
+                             [&](int i, auto* sum) {
+    *sum += ConstRow(z + 4 * i) * ConstRow(r + 4 * i);
   });
 }
 

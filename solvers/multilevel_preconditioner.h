@@ -1,68 +1,90 @@
-// lpd: an additive multilevel preconditioner for the T system of Eq. (9).
+// lpd: an aggregation multigrid V-cycle, the preconditioner of the T system of Eq. (9).
 //
 // Jacobi alone needs O(sqrt n) CG iterations on K, because the smoothness term couples
 // neighbours much more strongly than the stitching diagonal eta alpha_i holds each plane in
-// place: the slow error modes are smooth over the surface. This preconditioner adds coarse
-// corrections for them (multilevel diagonal scaling, in the spirit of BPX):
+// place: the slow error modes are smooth over the surface. A multigrid cycle removes them on
+// coarser levels, so the iteration count stops growing with n (the paper used AMG too).
 //
-//   M^-1 = sum_{l >= 0} P_l D_l^-1 P_l^T,   D_l = diag(P_l^T K P_l)
+// Levels. An aggregate of level l + 1 is a run of `aggregate_size` consecutive nodes of level
+// l (solvers/aggregation.h). Solving in Morton order (energy/spatial_order.h) makes these runs
+// spatially compact at every level, so no aggregation pass is needed and the hierarchy and
+// its sparsity patterns are built once per problem. Coarse matrices are
+// Galerkin products A_{l+1} = P_l^T A_l P_l, A_0 = K, refreshed with K's values; the
+// coarsest level (at most `coarsest_size` nodes) is solved exactly.
 //
-// Level 0 is Jacobi (P_0 = I). An aggregate of level l >= 1 is a run of `branching`^l
-// consecutive points; solving in Morton order (energy/spatial_order.h) makes these runs
-// spatially compact, so no aggregation pass is needed and the hierarchy is fixed for a given n.
-// The near-null space of the smoothness term is any plane field with t_i = s_ij t_j, and
-// s_ij (Eq. 8) carries both the relative scale and the relative orientation of neighbouring
-// planes: about a quarter of the s_ij are negative after the first local fit, and |s_ij|
-// ranges over 0.3-5. P_l therefore maps an aggregate to its points with entries
-// sigma_l(i) |t_i| taken from the current field T: |t_i| gives the scale and the signs
-// sigma_l(i) = +-1 orient every child aggregate to agree with its siblings' running sum.
-// M is symmetric positive definite for any field and any point order, so CG stays exact;
-// they only decide how much the coarse levels help. Measured on a 1M-point CAD part (k=20):
-// 40% fewer CG iterations than Jacobi, 25% less time per global step.
+// Prolongation. The near-null space of the smoothness term is any plane field with
+// t_i = s_ij t_j, and s_ij (Eq. 8) carries both the relative scale and the relative
+// orientation of neighbouring planes: about a quarter of the s_ij are negative after the
+// first local fit, and |s_ij| ranges over 0.3-5. P_0 therefore maps an aggregate to its
+// points with entries sigma_i |t_i| taken from the current field T, and P_l (l >= 1) with
+// entries sigma = +-1: the signs orient every child to agree with its siblings' running sum
+// of the field, so P_0 ... P_l reproduces T's magnitudes with consistent orientations.
+//
+// Cycle. One damped-Jacobi sweep before and after each coarse correction (the same sweep, so
+// the cycle is a symmetric operator), exact solve at the bottom:
+//   z = S r + (I - S A) (S r + P B_{l+1} P^T (I - A S) r),   S = omega D^-1.
+// Every pair of M adds a rank-one 2 x 2 block to K (and to each A_l), so rho(D^-1 A_l) <= 2
+// and any omega < 1 makes the cycle positive definite, which CG needs. It is, for any field
+// and any point order; those only decide how fast CG converges.
 #ifndef LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
 #define LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
 
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "energy/variables.h"
+#include "solvers/aggregation.h"
+#include "solvers/compressed_rows.h"
 
 namespace lpd::solvers {
 
-// A symmetric matrix in compressed rows.
-struct SymmetricRows {
-  const std::vector<int>& row_offsets;
-  const std::vector<int>& columns;
-  const std::vector<double>& values;
+struct MultilevelOptions {
+  int aggregate_size = 8;       // nodes per aggregate
+  int coarsest_size = 64;       // levels are added until one has at most this many nodes
+  double jacobi_damping = 0.7;  // omega, in (0, 1)
 };
 
 class MultilevelPreconditioner {
  public:
-  // Aggregates of `branching` consecutive children per level, until one aggregate is left
-  // or `max_levels` levels exist (1 gives plain Jacobi).
-  MultilevelPreconditioner(int num_points, int branching, int max_levels);
+  // Builds the levels and their sparsity patterns from K's (its values are not read).
+  MultilevelPreconditioner(const CompressedRows& k, const MultilevelOptions& options,
+                           int num_threads);
 
-  // Refreshes P_l from `field` (the current T) and the level diagonals from K's values.
-  // Sequential, O(nnz) for K's entries and O(n) for the rest.
-  void Update(const SymmetricRows& k, const energy::PlaneField& field);
+  // Refreshes P_l from `field` (the current T) and every A_l from K's values. K must keep
+  // its pattern and outlive the following Apply calls.
+  void Update(const CompressedRows& k, const energy::PlaneField& field, int num_threads);
 
-  // z = M^-1 r for 4 columns stored row-major (r, z: n x 4). Returns r.z per column, which
-  // CG needs next, from the same pass.
+  // z = B r, one V-cycle, for 4 columns stored row-major (r, z: n x 4). Returns r.z per
+  // column, which CG needs next, from the same pass.
   Eigen::Array4d Apply(const double* r, int num_threads, double* z);
 
-  int num_levels() const { return static_cast<int>(level_sizes_.size()); }
+  int num_levels() const { return static_cast<int>(levels_.size()); }
+  // A_l, for l >= 1 (tests and inspection).
+  const CompressedRows& CoarseMatrix(int l) const { return levels_[l].matrix; }
 
  private:
-  int Parent(int index) const { return index / branching_; }
+  struct Level {
+    int size = 0;
+    CompressedRows matrix;                  // A_l for l >= 1 (level 0 uses K)
+    std::vector<double> inverse_diagonal;   // 1 / (A_l)_ii
+    Aggregates aggregates;                  // nodes of level l + 1 (none at the coarsest)
+    std::vector<double> to_parent;          // P_l's entry of each node (empty at the coarsest)
+    std::vector<double> rhs;                // n_l x 4 (l >= 1): P^T of the finer residual
+    std::vector<double> solution;           // n_l x 4: the cycle's iterate
+    std::vector<double> correction;         // n_l x 4 (l >= 1): the cycle's result
+  };
 
-  int branching_;
-  std::vector<int> level_sizes_;  // aggregates per level; level 0 = points
-  std::vector<double> scale_;     // |t_i|: magnitude of point i's entry in every P_l, l >= 1
-  // flip_[l][c] = +-1: orientation of aggregate c of level l inside its level-(l+1) parent.
-  std::vector<std::vector<signed char>> flip_;
-  // inverse_diagonal_[l][c] = 1 / (P_l^T K P_l)_cc.
-  std::vector<std::vector<double>> inverse_diagonal_;
-  // restricted_[l]: P_l^T r (n_l x 4), then the coarse corrections on the way up.
-  std::vector<std::vector<double>> restricted_;
+  const CompressedRows& Matrix(int l) const { return l == 0 ? *fine_ : levels_[l].matrix; }
+  // P_l's entries from the field and P_0's magnitudes (one pass per level, parallel).
+  void UpdateProlongations(const energy::PlaneField& field, int num_threads);
+  // out = B_l b: one V-cycle from level l down.
+  void Cycle(int l, const double* b, int num_threads, double* out);
+
+  MultilevelOptions options_;
+  std::vector<Level> levels_;
+  const CompressedRows* fine_ = nullptr;
+  Eigen::LDLT<Eigen::MatrixXd> coarsest_solver_;
 };
 
 }  // namespace lpd::solvers

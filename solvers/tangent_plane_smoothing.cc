@@ -41,17 +41,17 @@ TangentPlaneSmoother::TangentPlaneSmoother(const energy::Problem& problem) : pro
   // Row i holds the diagonal and one entry per incident pair. Incident pairs come in
   // increasing partner order, so the row's columns are sorted once the diagonal is placed
   // between the partners below i and those above.
-  row_offsets_.resize(n + 1);
-  row_offsets_[0] = 0;
+  k_.row_offsets.resize(n + 1);
+  k_.row_offsets[0] = 0;
   diagonal_entry_.resize(n);
   for (int i = 0; i < n; ++i) {
     const int degree = graph.incident_offsets[i + 1] - graph.incident_offsets[i];
-    row_offsets_[i + 1] = row_offsets_[i] + degree + 1;
+    k_.row_offsets[i + 1] = k_.row_offsets[i] + degree + 1;
   }
-  columns_.resize(row_offsets_[n]);
-  values_.assign(row_offsets_[n], 0.0);
+  k_.columns.resize(k_.row_offsets[n]);
+  k_.values.assign(k_.row_offsets[n], 0.0);
   for (int i = 0; i < n; ++i) {
-    int entry = row_offsets_[i];
+    int entry = k_.row_offsets[i];
     int previous = -1;
     bool diagonal_placed = false;
     for (int e = graph.incident_offsets[i]; e < graph.incident_offsets[i + 1]; ++e) {
@@ -62,14 +62,14 @@ TangentPlaneSmoother::TangentPlaneSmoother(const energy::Problem& problem) : pro
       previous = partner;
       if (!diagonal_placed && partner > i) {
         diagonal_entry_[i] = entry;
-        columns_[entry++] = i;
+        k_.columns[entry++] = i;
         diagonal_placed = true;
       }
-      columns_[entry++] = partner;
+      k_.columns[entry++] = partner;
     }
     if (!diagonal_placed) {
       diagonal_entry_[i] = entry;
-      columns_[entry] = i;
+      k_.columns[entry] = i;
     }
   }
 }
@@ -96,21 +96,23 @@ void TangentPlaneSmoother::AssembleValues(const energy::EnergyParameters& parame
       diagonal += i_is_first ? w : w * s * s;
       // The row's entries follow its incident pairs, with the diagonal before the first
       // partner above i.
-      const int entry = row_offsets_[i] + (e - graph.incident_offsets[i]);
-      values_[entry < diagonal_entry_[i] ? entry : entry + 1] = -w * s;
+      const int entry = k_.row_offsets[i] + (e - graph.incident_offsets[i]);
+      k_.values[entry < diagonal_entry_[i] ? entry : entry + 1] = -w * s;
     }
-    values_[diagonal_entry_[i]] = diagonal;
+    k_.values[diagonal_entry_[i]] = diagonal;
   }
 }
 
-void TangentPlaneSmoother::RowProduct(const double* x, int i, double* y) const {
-  double sum[4] = {0.0, 0.0, 0.0, 0.0};
-  for (int e = row_offsets_[i]; e < row_offsets_[i + 1]; ++e) {
-    const double value = values_[e];
-    const double* x_j = x + 4 * columns_[e];
-    for (int c = 0; c < 4; ++c) sum[c] += value * x_j[c];
-  }
-  for (int c = 0; c < 4; ++c) y[c] = sum[c];
+Eigen::Array4d TangentPlaneSmoother::Precondition(Preconditioner kind, const double* r,
+                                                  int num_threads, double* z) {
+  if (kind == Preconditioner::kMultilevel) return multilevel_->Apply(r, num_threads, z);
+  const int n = problem_.num_points();
+  return SumOverRows(n, num_threads, Eigen::Array4d::Zero().eval(), [&](int i, auto* sum) {
+    for (int c = 0; c < 4; ++c) {
+      z[4 * i + c] = r[4 * i + c] / k_.values[diagonal_entry_[i]];
+      (*sum)[c] += z[4 * i + c] * r[4 * i + c];
+    }
+  });
 }
 
 LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& parameters,
@@ -118,16 +120,14 @@ LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& pa
                                               int num_threads, energy::Variables* v) {
   AssembleValues(parameters, *v, num_threads);
   const int n = problem_.num_points();
-  if (!preconditioner_ || preconditioner_kind_ != options.preconditioner) {
-    const bool multilevel = options.preconditioner == Preconditioner::kMultilevel;
-    // Aggregates of 8 and 64 points: more levels measured no fewer iterations.
-    preconditioner_.emplace(n, /*branching=*/8, /*max_levels=*/multilevel ? 3 : 1);
-    preconditioner_kind_ = options.preconditioner;
+  const Preconditioner kind = options.preconditioner;
+  if (kind == Preconditioner::kMultilevel) {
+    if (!multilevel_) multilevel_.emplace(k_, MultilevelOptions{}, num_threads);
+    // The near-null space of the smoothness term is the current plane field (t_i = s_ij t_j);
+    // Alg. 1's first solve starts from T = 0, and then H stands in for it.
+    const bool has_planes = v->t.squaredNorm() > 0.0;
+    multilevel_->Update(k_, has_planes ? v->t : v->h, num_threads);
   }
-  // The near-null space of the smoothness term is the current plane field (t_i = s_ij t_j);
-  // Alg. 1's first solve starts from T = 0, and then H stands in for it.
-  const bool has_planes = v->t.squaredNorm() > 0.0;
-  preconditioner_->Update({row_offsets_, columns_, values_}, has_planes ? v->t : v->h);
   for (auto* work : {&residual_, &preconditioned_, &direction_, &product_}) {
     work->resize(4 * static_cast<size_t>(n));
   }
@@ -145,7 +145,7 @@ LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& pa
   // r = W - K x; per column the sums of |r|^2 and |W|^2.
   const Array8 start = SumOverRows(n, num_threads, Array8::Zero().eval(), [&](int i, auto* sum) {
     const double weight = parameters.eta * problem_.alpha[i];
-    RowProduct(x, i, r + 4 * i);
+    k_.RowTimes(x, i, r + 4 * i);
     for (int c = 0; c < 4; ++c) {
       const double w = weight * h[4 * i + c];
       const double r_c = w - r[4 * i + c];
@@ -156,13 +156,13 @@ LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& pa
   });
   Array4 residual = start.head<4>().sqrt();
   const Array4 target = options.relative_tolerance * start.tail<4>().sqrt().max(1e-300);
-  Array4 rz = preconditioner_->Apply(r, num_threads, z);
+  Array4 rz = Precondition(kind, r, num_threads, z);
   std::copy(z, z + 4 * static_cast<size_t>(n), p);
 
   LinearSolveStats stats;
   while ((residual > target).any() && stats.iterations < options.max_iterations) {
     const Array4 pkp = SumOverRows(n, num_threads, Array4::Zero().eval(), [&](int i, auto* sum) {
-      RowProduct(p, i, kp + 4 * i);
+      k_.RowTimes(p, i, kp + 4 * i);
       for (int c = 0; c < 4; ++c) (*sum)[c] += p[4 * i + c] * kp[4 * i + c];
     });
     // Converged columns stop moving (step 0) while the others go on.
@@ -176,7 +176,7 @@ LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& pa
         (*sum)[c] += r_c * r_c;
       }
     }).sqrt();
-    const Array4 rz_next = preconditioner_->Apply(r, num_threads, z);
+    const Array4 rz_next = Precondition(kind, r, num_threads, z);
     const Array4 momentum = (step != 0.0 && rz > 0.0).select(rz_next / rz, 0.0);
 #pragma omp parallel for schedule(static) num_threads(num_threads)
     for (int i = 0; i < n; ++i) {
@@ -195,10 +195,10 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> TangentPlaneSmoother::SystemMatrix(
   const int n = problem_.num_points();
   Eigen::SparseMatrix<double, Eigen::RowMajor> k(n, n);
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(values_.size());
+  entries.reserve(k_.values.size());
   for (int i = 0; i < n; ++i) {
-    for (int e = row_offsets_[i]; e < row_offsets_[i + 1]; ++e) {
-      entries.emplace_back(i, columns_[e], values_[e]);
+    for (int e = k_.row_offsets[i]; e < k_.row_offsets[i + 1]; ++e) {
+      entries.emplace_back(i, k_.columns[e], k_.values[e]);
     }
   }
   k.setFromTriplets(entries.begin(), entries.end());

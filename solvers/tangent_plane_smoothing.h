@@ -21,13 +21,14 @@
 #include "energy/energy_parameters.h"
 #include "energy/problem.h"
 #include "energy/variables.h"
+#include "solvers/compressed_rows.h"
 #include "solvers/multilevel_preconditioner.h"
 
 namespace lpd::solvers {
 
 enum class Preconditioner {
   kJacobi,      // 1 / K_ii
-  kMultilevel,  // Jacobi plus coarse corrections (multilevel_preconditioner.h)
+  kMultilevel,  // an aggregation multigrid V-cycle (multilevel_preconditioner.h)
 };
 const char* PreconditionerName(Preconditioner preconditioner);  // "jacobi", "multilevel"
 // Returns false (and leaves *preconditioner) for an unknown name.
@@ -68,16 +69,13 @@ class TangentPlaneSmoother {
                       int num_threads);
   // The other point of the pair incident_pairs[incident] of point i.
   int Partner(int i, int incident) const;
-  // y = row i of K X, for X stored row-major with 4 columns.
-  void RowProduct(const double* x, int i, double* y) const;
+  // z = M^-1 r for the chosen preconditioner; returns r.z per column.
+  Eigen::Array4d Precondition(Preconditioner kind, const double* r, int num_threads, double* z);
 
   const energy::Problem& problem_;
-  std::vector<int> row_offsets_;        // CSR row starts, size n + 1
-  std::vector<int> columns_;            // CSR column of each stored entry
-  std::vector<double> values_;          // CSR values, refreshed by AssembleValues
+  CompressedRows k_;                    // K: pattern built once, values by AssembleValues
   std::vector<int> diagonal_entry_;     // entry of K_ii per row
-  std::optional<MultilevelPreconditioner> preconditioner_;  // built for options' kind
-  Preconditioner preconditioner_kind_ = Preconditioner::kJacobi;
+  std::optional<MultilevelPreconditioner> multilevel_;  // built at the first multilevel solve
   // CG work arrays (n x 4 each), kept between solves: residual, preconditioned residual,
   // search direction and K times it.
   std::vector<double> residual_, preconditioned_, direction_, product_;

@@ -1,6 +1,7 @@
-// The multilevel preconditioner against M^-1 = sum_l P_l diag(P_l^T K P_l)^-1 P_l^T built
-// densely from its definition, and as a CG preconditioner against Jacobi.
+// Galerkin coarsening against dense products, the V-cycle against its operator built densely
+// from the recursion, and the cycle as a CG preconditioner against Jacobi.
 #include "solvers/multilevel_preconditioner.h"
+#include "solvers/aggregation.h"
 
 #include <random>
 
@@ -64,38 +65,93 @@ energy::PlaneField ParallelField(int n, uint64_t seed, Eigen::VectorXd* entries)
   return field;
 }
 
-Eigen::MatrixXd DenseInverse(const RandomSymmetricMatrix& k, const Eigen::VectorXd& entries,
-                             int branching, int levels) {
-  const int n = static_cast<int>(entries.size());
-  Eigen::MatrixXd inverse = k.dense.diagonal().cwiseInverse().asDiagonal();
-  int size = 1;
-  for (int l = 1; l < levels; ++l) {
-    size *= branching;
-    for (int first = 0; first < n; first += size) {
-      Eigen::VectorXd p = Eigen::VectorXd::Zero(n);
-      for (int i = first; i < std::min(n, first + size); ++i) p[i] = entries[i];
-      inverse += p * p.transpose() / p.dot(k.dense * p);
-    }
+Eigen::MatrixXd ToDense(const CompressedRows& a) {
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(a.num_rows(), a.num_rows());
+  for (int i = 0; i < a.num_rows(); ++i) {
+    for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) dense(i, a.columns[e]) = a.values[e];
   }
-  return inverse;
+  return dense;
 }
 
-TEST(MultilevelPreconditioner, MatchesTheDenseDefinition) {
-  for (const auto& [n, branching, max_levels] :
-       {std::tuple{8, 8, 3}, std::tuple{37, 3, 4}, std::tuple{64, 4, 8}}) {
+CompressedRows ToRows(const RandomSymmetricMatrix& m) { return {m.row_offsets, m.columns, m.values}; }
+
+TEST(Aggregation, GalerkinProductMatchesTheDenseProductForAnyGrouping) {
+  const int n = 40, count = 11;
+  const RandomSymmetricMatrix a = MakeMatrix(n, 5);
+  std::mt19937_64 rng(6);
+  std::vector<int> parent(n);
+  for (int i = 0; i < n; ++i) parent[i] = i < count ? i : static_cast<int>(rng() % count);
+  std::vector<double> p(n);
+  for (double& entry : p) entry = std::uniform_real_distribution<double>(-2.0, 2.0)(rng);
+  const Aggregates aggregates = AggregatesFromParents(parent, count);
+  for (int c = 0; c < count; ++c) {
+    for (int k = aggregates.child_offsets[c]; k < aggregates.child_offsets[c + 1]; ++k) {
+      EXPECT_EQ(parent[aggregates.children[k]], c);
+    }
+  }
+  Eigen::MatrixXd dense_p = Eigen::MatrixXd::Zero(n, count);
+  for (int i = 0; i < n; ++i) dense_p(i, parent[i]) = p[i];
+  CompressedRows coarse = GalerkinPattern(ToRows(a), aggregates, 2);
+  GalerkinValues(ToRows(a), p, aggregates, 2, &coarse);
+  const Eigen::MatrixXd expected = dense_p.transpose() * a.dense * dense_p;
+  EXPECT_LT((ToDense(coarse) - expected).norm(), 1e-12 * expected.norm());
+  // P = 1 when no entries are given; runs group consecutive nodes.
+  const Aggregates runs = ConsecutiveRuns(n, 6);
+  ASSERT_EQ(runs.count, 7);
+  CompressedRows summed = GalerkinPattern(ToRows(a), runs, 1);
+  GalerkinValues(ToRows(a), {}, runs, 1, &summed);
+  EXPECT_NEAR(ToDense(summed).sum(), a.dense.sum(), 1e-12 * a.dense.cwiseAbs().sum());
+  EXPECT_NEAR(ToDense(summed)(6, 6), a.dense.bottomRightCorner(4, 4).sum(), 1e-12);
+}
+
+// The V-cycle's operator from its recursion, for P_0 with `entries` on runs of
+// `aggregate_size` points and P_l = 1 on runs above (the orientations the preconditioner
+// picks flip whole coarse columns, which leaves the operator unchanged):
+//   B_L = A_L^-1,  B_l = 2S - SAS + (I - SA) P B_{l+1} P^T (I - AS),  S = omega D^-1.
+Eigen::MatrixXd DenseVCycle(const Eigen::MatrixXd& a, const Eigen::VectorXd& entries,
+                            const MultilevelOptions& options, int levels,
+                            std::vector<Eigen::MatrixXd>* coarse_matrices) {
+  const int n = static_cast<int>(a.rows());
+  if (levels == 1) return a.inverse();
+  const int coarse = (n + options.aggregate_size - 1) / options.aggregate_size;
+  Eigen::MatrixXd p = Eigen::MatrixXd::Zero(n, coarse);
+  for (int i = 0; i < n; ++i) p(i, i / options.aggregate_size) = entries[i];
+  const Eigen::MatrixXd a_coarse = p.transpose() * a * p;
+  coarse_matrices->push_back(a_coarse);
+  const Eigen::MatrixXd b_coarse = DenseVCycle(a_coarse, Eigen::VectorXd::Ones(coarse), options,
+                                               levels - 1, coarse_matrices);
+  const Eigen::MatrixXd s = options.jacobi_damping * a.diagonal().cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
+  return 2.0 * s - s * a * s +
+         (identity - s * a) * p * b_coarse * p.transpose() * (identity - a * s);
+}
+
+TEST(MultilevelPreconditioner, MatchesTheDenseVCycle) {
+  for (const auto& [n, aggregate_size, coarsest_size, levels] :
+       {std::tuple{8, 8, 1, 2}, std::tuple{37, 3, 2, 4}, std::tuple{64, 4, 4, 3}}) {
     const RandomSymmetricMatrix k = MakeMatrix(n, 10 + n);
     Eigen::VectorXd entries;
     const energy::PlaneField field = ParallelField(n, 20 + n, &entries);
-    MultilevelPreconditioner preconditioner(n, branching, max_levels);
-    preconditioner.Update({k.row_offsets, k.columns, k.values}, field);
-    const Eigen::MatrixXd expected =
-        DenseInverse(k, entries, branching, preconditioner.num_levels());
-
+    MultilevelOptions options;
+    options.aggregate_size = aggregate_size;
+    options.coarsest_size = coarsest_size;
+    const CompressedRows rows = ToRows(k);
+    MultilevelPreconditioner preconditioner(rows, options, 2);
+    preconditioner.Update(rows, field, 2);
+    ASSERT_EQ(preconditioner.num_levels(), levels) << n;
+    std::vector<Eigen::MatrixXd> coarse_matrices;
+    const Eigen::MatrixXd expected = DenseVCycle(k.dense, entries, options, levels, &coarse_matrices);
+    // Coarse matrices agree up to the orientation of each coarse node.
+    for (int l = 1; l < levels; ++l) {
+      const Eigen::MatrixXd& dense = coarse_matrices[l - 1];
+      EXPECT_LT((ToDense(preconditioner.CoarseMatrix(l)).cwiseAbs() - dense.cwiseAbs()).norm(),
+                1e-12 * dense.norm());
+    }
     energy::PlaneField r = energy::PlaneField::Random(n, 4);
     energy::PlaneField z(n, 4);
     const Eigen::Array4d rz = preconditioner.Apply(r.data(), 2, z.data());
     const Eigen::MatrixXd z_expected = expected * Eigen::MatrixXd(r);
-    EXPECT_LT((Eigen::MatrixXd(z) - z_expected).norm(), 1e-12 * z_expected.norm()) << n;
+    EXPECT_LT((Eigen::MatrixXd(z) - z_expected).norm(), 1e-10 * z_expected.norm()) << n;
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(rz[c], r.col(c).dot(z.col(c)), 1e-12 * rz.abs()[c]);
   }
 }
@@ -104,8 +160,12 @@ TEST(MultilevelPreconditioner, IsSymmetricPositiveDefiniteForAnyField) {
   const int n = 50;
   const RandomSymmetricMatrix k = MakeMatrix(n, 3);
   const energy::PlaneField field = energy::PlaneField::Random(n, 4);
-  MultilevelPreconditioner preconditioner(n, 4, 4);
-  preconditioner.Update({k.row_offsets, k.columns, k.values}, field);
+  MultilevelOptions options;
+  options.aggregate_size = 4;
+  options.coarsest_size = 3;
+  const CompressedRows rows = ToRows(k);
+  MultilevelPreconditioner preconditioner(rows, options, 1);
+  preconditioner.Update(rows, field, 1);
   ASSERT_EQ(preconditioner.num_levels(), 4);
   // Column j of M^-1, read off the first of the four right-hand sides.
   Eigen::MatrixXd m_inverse(n, n);
@@ -143,7 +203,8 @@ TEST(MultilevelPreconditioner, NeedsFewerConjugateGradientStepsThanJacobi) {
     EXPECT_LE(stats.relative_residual, 1e-8);
     iterations[static_cast<int>(kind)] = stats.iterations;
   }
-  EXPECT_LT(iterations[1], 0.8 * iterations[0])
+  // Measured: 128 Jacobi and 36 multigrid iterations.
+  EXPECT_LT(iterations[1], 0.4 * iterations[0])
       << "jacobi " << iterations[0] << ", multilevel " << iterations[1];
 }
 
