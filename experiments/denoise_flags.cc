@@ -52,8 +52,8 @@ DEFINE_int32(gnc_stage_iters, 1, "outer iterations per GNC stage");
 DEFINE_double(linear_tolerance, 1e-4, "relative residual at which the T solve (Eq. 9) stops");
 DEFINE_int32(max_cg_iterations, 2000, "conjugate-gradient iterations per T solve, at most");
 DEFINE_string(preconditioner, "multilevel",
-              "of the T solve's conjugate gradients: jacobi (1/K_ii) or multilevel (Jacobi "
-              "plus coarse corrections on runs of 8 and 64 points along the Morton curve)");
+              "of the T solve's conjugate gradients: jacobi (1/K_ii) or multilevel (a multigrid "
+              "V-cycle on runs of 8 points along the Morton curve)");
 // ---- joint solve (--solver=ceres) ----
 DEFINE_string(ceres_linear_solver, "sparse_schur",
               "sparse_schur, iterative_schur, sparse_normal_cholesky or cgnr");
