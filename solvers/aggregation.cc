@@ -1,14 +1,9 @@
 #include "solvers/aggregation.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace lpd::solvers {
-namespace {
-
-// Small matrices run on one thread: a parallel region would cost more than the work.
-int ThreadsFor(int size, int num_threads) { return size >= 4096 ? num_threads : 1; }
-
-}  // namespace
 
 Aggregates AggregatesFromParents(std::vector<int> parent, int count) {
   Aggregates aggregates;
@@ -34,7 +29,7 @@ Aggregates ConsecutiveRuns(int num_nodes, int run_length) {
 CompressedRows GalerkinPattern(const CompressedRows& a, const Aggregates& aggregates,
                                int num_threads) {
   std::vector<std::vector<int>> rows(aggregates.count);
-#pragma omp parallel for schedule(static) num_threads(ThreadsFor(a.num_rows(), num_threads))
+#pragma omp parallel for schedule(static) num_threads(ThreadsForRows(a.num_rows(), num_threads))
   for (int c = 0; c < aggregates.count; ++c) {
     std::vector<int>& row = rows[c];
     for (int k = aggregates.child_offsets[c]; k < aggregates.child_offsets[c + 1]; ++k) {
@@ -63,7 +58,7 @@ CompressedRows GalerkinPattern(const CompressedRows& a, const Aggregates& aggreg
 void GalerkinValues(const CompressedRows& a, const std::vector<double>& to_parent,
                     const Aggregates& aggregates, int num_threads, CompressedRows* coarse) {
   auto p = [&](int i) { return to_parent.empty() ? 1.0 : to_parent[i]; };
-#pragma omp parallel num_threads(ThreadsFor(a.num_rows(), num_threads))
+#pragma omp parallel num_threads(ThreadsForRows(a.num_rows(), num_threads))
   {
     // slot[b] = entry of column b in the coarse row being assembled.
     std::vector<int> slot(aggregates.count);

@@ -8,7 +8,7 @@
 // The aggregates used are runs of consecutive nodes: in Morton order (energy/spatial_order.h)
 // a run is spatially compact, at every level, and the hierarchy costs nothing to build.
 // Strength-based aggregation (three rounds of strongest-neighbour matching, after Notay) was
-// measured too: 10-25% fewer CG iterations at 100K-400K points, but its sequential setup
+// measured too: 10-30% fewer CG iterations at 100K-400K points, but its sequential setup
 // took longer than the iterations it saved.
 #ifndef LPD_SOLVERS_AGGREGATION_H_
 #define LPD_SOLVERS_AGGREGATION_H_

@@ -29,6 +29,10 @@ struct CompressedRows {
   }
 };
 
+// Threads for a parallel pass over `rows` rows: one below 4096, where opening a parallel
+// region costs more than the work.
+inline int ThreadsForRows(int rows, int num_threads) { return rows >= 4096 ? num_threads : 1; }
+
 }  // namespace lpd::solvers
 
 #endif  // LPD_SOLVERS_COMPRESSED_ROWS_H_

@@ -12,9 +12,6 @@ using Row = Eigen::Map<Eigen::Array4d>;
 using ConstRow = Eigen::Map<const Eigen::Array4d>;
 using Columns4 = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>;
 
-// Levels this small run on one thread: a parallel region would cost more than the work.
-int ThreadsFor(int size, int num_threads) { return size >= 4096 ? num_threads : 1; }
-
 }  // namespace
 
 MultilevelPreconditioner::MultilevelPreconditioner(const CompressedRows& k,
@@ -67,7 +64,7 @@ void MultilevelPreconditioner::UpdateProlongations(const energy::PlaneField& fie
     const Aggregates& aggregates = level.aggregates;
     const double* children = l == 0 ? field.data() : child_sum.data();
     parent_sum.resize(4 * static_cast<size_t>(aggregates.count));
-#pragma omp parallel for schedule(static) num_threads(ThreadsFor(level.size, num_threads))
+#pragma omp parallel for schedule(static) num_threads(ThreadsForRows(level.size, num_threads))
     for (int a = 0; a < aggregates.count; ++a) {
       Eigen::Array4d sum = Eigen::Array4d::Zero();
       for (int k = aggregates.child_offsets[a]; k < aggregates.child_offsets[a + 1]; ++k) {
@@ -98,7 +95,7 @@ void MultilevelPreconditioner::Update(const CompressedRows& k, const energy::Pla
     if (l + 1 < num_levels()) {
       GalerkinValues(a, level.to_parent, level.aggregates, num_threads, &levels_[l + 1].matrix);
     }
-#pragma omp parallel for schedule(static) num_threads(ThreadsFor(level.size, num_threads))
+#pragma omp parallel for schedule(static) num_threads(ThreadsForRows(level.size, num_threads))
     for (int i = 0; i < level.size; ++i) {
       for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
         if (a.columns[e] == i) level.inverse_diagonal[i] = 1.0 / a.values[e];
@@ -127,7 +124,7 @@ void MultilevelPreconditioner::Cycle(int l, const double* b, int num_threads, do
   const CompressedRows& a_l = Matrix(l);
   const Aggregates& aggregates = level.aggregates;
   double* x = level.solution.data();
-  const int threads = ThreadsFor(level.size, num_threads);
+  const int threads = ThreadsForRows(level.size, num_threads);
   // Pre-smoothing from zero, x = S b, then P^T (b - A x) to the next level.
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (int i = 0; i < level.size; ++i) {

@@ -3,7 +3,9 @@
 // Jacobi alone needs O(sqrt n) CG iterations on K, because the smoothness term couples
 // neighbours much more strongly than the stitching diagonal eta alpha_i holds each plane in
 // place: the slow error modes are smooth over the surface. A multigrid cycle removes them on
-// coarser levels, so the iteration count stops growing with n (the paper used AMG too).
+// coarser levels (the paper used AMG too). Measured on the procedural CAD part at k = 20:
+// 23 CG iterations per outer iteration at 25K points and 49 at 1M, where Jacobi needs 4x more
+// (README, Performance, explains what keeps the count growing).
 //
 // Levels. An aggregate of level l + 1 is a run of `aggregate_size` consecutive nodes of level
 // l (solvers/aggregation.h). Solving in Morton order (energy/spatial_order.h) makes these runs
