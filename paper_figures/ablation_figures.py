@@ -3,26 +3,16 @@
 Each function reads results/<config>/results.csv or .jsonl as written by `lpd sweep` and
 writes out/<config>.md (and .png); a config without results is skipped with a message.
 """
-import json
 import math
-import os
 
 import make_all as common
 from make_all import label, plt, save_plot, table, write
+from render_clouds import read_records
 
 QUALITY = [("MSE (1e-5)", "mse_normalized", 1e-5, 3),
            ("MCD (1e-3)", "mcd_normalized", 1e-3, 3)]
 RUN = [("final energy", "final_energy", 1, 4), ("iterations", "iterations", 1, 0),
        ("seconds", "seconds", 1, 2)]
-
-
-def records(results, name):
-    path = os.path.join(results, name, "results.jsonl")
-    if not os.path.exists(path):
-        print(f"skip {name}: no results in {path} (run: build/lpd sweep configs/{name}.yaml)")
-        return None
-    with open(path) as f:
-        return [json.loads(line) for line in f if line.strip()]
 
 
 def value(record, key, scale=1.0, digits=3):
@@ -36,7 +26,7 @@ def value(record, key, scale=1.0, digits=3):
 
 def comparison_table(results, out, name, title, metrics, note=""):
     """One row per (dataset, noise, method) with `metrics`."""
-    rows = records(results, name)
+    rows = read_records(results, name)
     if rows is None:
         return None
     rows.sort(key=lambda r: (r["dataset"], str(r.get("noise_sigma")),
@@ -51,7 +41,7 @@ def comparison_table(results, out, name, title, metrics, note=""):
 
 
 def fig5_energy(results, out):
-    rows = records(results, "fig5_energy")
+    rows = read_records(results, "fig5_energy")
     if rows is None:
         return
     rows.sort(key=lambda r: common.natural(r["dataset"]))
@@ -83,7 +73,7 @@ def fig5_energy(results, out):
 
 
 def fig9_parameters(results, out):
-    rows = records(results, "fig9_parameters")
+    rows = read_records(results, "fig9_parameters")
     if rows is None:
         return
     runs = [r for r in rows if r["method"] == "lpd"]
@@ -119,7 +109,7 @@ def fig9_parameters(results, out):
 
 
 def ablation_gnc(results, out):
-    rows = records(results, "ablation_gnc")
+    rows = read_records(results, "ablation_gnc")
     if rows is None:
         return
     converged = [r for r in rows if r["method"] == "lpd" and int(r["max_iters"]) == 200]

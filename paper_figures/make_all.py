@@ -9,7 +9,6 @@ skipped with a message. Needs only Debian's python3 and python3-matplotlib.
 """
 import argparse
 import csv
-import json
 import math
 import os
 import re
@@ -267,13 +266,12 @@ def energy_trace(record):
 
 def solver_validation(results, out):
     """Energy versus wall time of the alternating driver and the joint solve (issue 4)."""
+    from render_clouds import read_records
+
     name = "solver_validation"
-    path = os.path.join(results, name, "results.jsonl")
-    if not os.path.exists(path):
-        print(f"skip {name}: no results in {path} (run: build/lpd sweep configs/{name}.yaml)")
+    records = read_records(results, name)
+    if records is None:
         return
-    with open(path) as f:
-        records = [json.loads(line) for line in f if line.strip()]
     inputs = {r["dataset"]: r for r in records if r["method"] == "none"}
     runs = sorted((r for r in records if r["method"] != "none"),
                   key=lambda r: (int(r["num_input"]), natural(label(r))))

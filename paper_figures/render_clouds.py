@@ -75,7 +75,7 @@ def read_records(results, name):
     """The JSON records of results/NAME/results.jsonl, or None (with a message) if absent."""
     path = os.path.join(results, name, "results.jsonl")
     if not os.path.exists(path):
-        print(f"skip renderings of {name}: no results in {path}")
+        print(f"skip {name}: no results in {path} (run: build/lpd sweep configs/{name}.yaml)")
         return None
     with open(path) as f:
         return [json.loads(line) for line in f if line.strip()]
