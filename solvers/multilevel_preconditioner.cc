@@ -37,8 +37,11 @@ MultilevelPreconditioner::MultilevelPreconditioner(const CompressedRows& k,
   for (size_t l = 0; l < levels_.size(); ++l) {
     Level& level = levels_[l];
     const size_t size = level.size;
-    level.inverse_diagonal.resize(size);
-    if (l + 1 < levels_.size()) level.to_parent.resize(size);
+    if (l + 1 < levels_.size()) {
+      level.to_parent.resize(size);
+      level.block_inverses.resize(static_cast<size_t>(level.aggregates.count) *
+                                  options_.aggregate_size * options_.aggregate_size);
+    }
     level.solution.resize(4 * size);
     if (l > 0) {
       level.rhs.resize(4 * size);
@@ -94,12 +97,7 @@ void MultilevelPreconditioner::Update(const CompressedRows& k, const energy::Pla
     const CompressedRows& a = Matrix(l);
     if (l + 1 < num_levels()) {
       GalerkinValues(a, level.to_parent, level.aggregates, num_threads, &levels_[l + 1].matrix);
-    }
-#pragma omp parallel for schedule(static) num_threads(ThreadsForRows(level.size, num_threads))
-    for (int i = 0; i < level.size; ++i) {
-      for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
-        if (a.columns[e] == i) level.inverse_diagonal[i] = 1.0 / a.values[e];
-      }
+      UpdateBlockInverses(l, num_threads);
     }
   }
   const Level& coarsest = levels_.back();
@@ -113,6 +111,55 @@ void MultilevelPreconditioner::Update(const CompressedRows& k, const energy::Pla
   coarsest_solver_.compute(dense);
 }
 
+void MultilevelPreconditioner::UpdateBlockInverses(int l, int num_threads) {
+  Level& level = levels_[l];
+  const CompressedRows& a = Matrix(l);
+  const Aggregates& aggregates = level.aggregates;
+  const int stride = options_.aggregate_size * options_.aggregate_size;
+#pragma omp parallel num_threads(ThreadsForRows(level.size, num_threads))
+  {
+    Eigen::MatrixXd block;
+#pragma omp for schedule(static)
+    for (int g = 0; g < aggregates.count; ++g) {
+      // Aggregates are runs of consecutive nodes (ConsecutiveRuns).
+      const int first = aggregates.child_offsets[g];
+      const int size = aggregates.child_offsets[g + 1] - first;
+      block.setZero(size, size);
+      for (int p = 0; p < size; ++p) {
+        const int i = first + p;
+        for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
+          const int j = a.columns[e];
+          if (j >= first && j < first + size) block(p, j - first) = a.values[e];
+        }
+      }
+      // A principal block of an SPD matrix is SPD.
+      Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          level.block_inverses.data() + static_cast<size_t>(g) * stride, size, size) =
+          block.llt().solve(Eigen::MatrixXd::Identity(size, size));
+    }
+  }
+}
+
+void MultilevelPreconditioner::ApplyBlockInverse(int l, int a, const double* v, bool accumulate,
+                                                 double* y) const {
+  const Level& level = levels_[l];
+  const int first = level.aggregates.child_offsets[a];
+  const int size = level.aggregates.child_offsets[a + 1] - first;
+  const double* inverse = level.block_inverses.data() +
+                          static_cast<size_t>(a) * options_.aggregate_size * options_.aggregate_size;
+  const double omega = options_.jacobi_damping;
+  for (int p = 0; p < size; ++p) {
+    Eigen::Array4d sum = Eigen::Array4d::Zero();
+    for (int q = 0; q < size; ++q) sum += inverse[p * size + q] * ConstRow(v + 4 * q);
+    Row row(y + 4 * (first + p));
+    if (accumulate) {
+      row += omega * sum;
+    } else {
+      row = omega * sum;
+    }
+  }
+}
+
 void MultilevelPreconditioner::Cycle(int l, const double* b, int num_threads, double* out) {
   Level& level = levels_[l];
   if (l + 1 == num_levels()) {
@@ -120,15 +167,15 @@ void MultilevelPreconditioner::Cycle(int l, const double* b, int num_threads, do
         coarsest_solver_.solve(Eigen::Map<const Columns4>(b, level.size, 4));
     return;
   }
-  const double omega = options_.jacobi_damping;
   const CompressedRows& a_l = Matrix(l);
   const Aggregates& aggregates = level.aggregates;
   double* x = level.solution.data();
   const int threads = ThreadsForRows(level.size, num_threads);
-  // Pre-smoothing from zero, x = S b, then P^T (b - A x) to the next level.
+  // Pre-smoothing from zero, x = S b, then P^T (b - A x) to the next level. Aggregates are
+  // runs of consecutive nodes, so an aggregate's rows of b are contiguous.
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (int i = 0; i < level.size; ++i) {
-    Row(x + 4 * i) = omega * level.inverse_diagonal[i] * ConstRow(b + 4 * i);
+  for (int a = 0; a < aggregates.count; ++a) {
+    ApplyBlockInverse(l, a, b + 4 * aggregates.child_offsets[a], false, x);
   }
   Level& coarse = levels_[l + 1];
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -149,12 +196,20 @@ void MultilevelPreconditioner::Cycle(int l, const double* b, int num_threads, do
   for (int i = 0; i < level.size; ++i) {
     Row(x + 4 * i) += level.to_parent[i] * ConstRow(correction + 4 * aggregates.parent[i]);
   }
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (int i = 0; i < level.size; ++i) {
-    Eigen::Array4d product;
-    a_l.RowTimes(x, i, product.data());
-    Row(out + 4 * i) =
-        ConstRow(x + 4 * i) + omega * level.inverse_diagonal[i] * (ConstRow(b + 4 * i) - product);
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<double> residual(4 * static_cast<size_t>(options_.aggregate_size));
+#pragma omp for schedule(static)
+    for (int a = 0; a < aggregates.count; ++a) {
+      // The aggregate's rows of b - A x.
+      for (int i = aggregates.child_offsets[a]; i < aggregates.child_offsets[a + 1]; ++i) {
+        Row r(residual.data() + 4 * (i - aggregates.child_offsets[a]));
+        a_l.RowTimes(x, i, r.data());
+        r = ConstRow(b + 4 * i) - r;
+        Row(out + 4 * i) = ConstRow(x + 4 * i);
+      }
+      ApplyBlockInverse(l, a, residual.data(), true, out);
+    }
   }
 }
 

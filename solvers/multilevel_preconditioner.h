@@ -22,12 +22,23 @@
 // entries sigma = +-1: the signs orient every child to agree with its siblings' running sum
 // of the field, so P_0 ... P_l reproduces T's magnitudes with consistent orientations.
 //
-// Cycle. One damped-Jacobi sweep before and after each coarse correction (the same sweep, so
-// the cycle is a symmetric operator), exact solve at the bottom:
-//   z = S r + (I - S A) (S r + P B_{l+1} P^T (I - A S) r),   S = omega D^-1.
-// Every pair of M adds a rank-one 2 x 2 block to K (and to each A_l), so rho(D^-1 A_l) <= 2
-// and any omega < 1 makes the cycle positive definite, which CG needs. It is, for any field
-// and any point order; those only decide how fast CG converges.
+// Cycle. One damped block-Jacobi sweep before and after each coarse correction (the same
+// sweep, so the cycle is a symmetric operator), exact solve at the bottom:
+//   z = S r + (I - S A) (S r + P B_{l+1} P^T (I - A S) r),   S = omega D_B^-1,
+// where D_B is A_l restricted to the blocks aggregate x aggregate. Every pair of M adds a
+// rank-one 2 x 2 block to K, and P^T keeps that form on every level, so a pair inside an
+// aggregate is part of D_B and a pair across two is at most twice its share of D_B:
+// A_l <= 2 D_B, and any omega < 1 makes the cycle positive definite, which CG needs. It is,
+// for any field and any point order; those only decide how fast CG converges.
+//
+// Why blocks and not the diagonal: beta_ij ~ 1 / |p_i - p_j|^2 (Eq. 5) has a heavy tail on
+// sampled surfaces, and its largest values grow with n (the closest pair gets closer). The
+// error where a strongly coupled pair moves together, against its other neighbours, is
+// barely damped by point Jacobi (the pair's coupling dominates both diagonals) and a coarse
+// node cannot represent it either (it moves the whole aggregate). Solving each aggregate's
+// block exactly removes it whenever the pair shares an aggregate. Measured on the CAD part at
+// k = 20: 25% fewer CG iterations at 1M points (49 -> 37), 12% less time in the global step.
+
 #ifndef LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
 #define LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
 
@@ -44,7 +55,7 @@ namespace lpd::solvers {
 struct MultilevelOptions {
   int aggregate_size = 8;       // nodes per aggregate
   int coarsest_size = 64;       // levels are added until one has at most this many nodes
-  double jacobi_damping = 0.7;  // omega, in (0, 1)
+  double jacobi_damping = 0.85;  // omega of the block-Jacobi sweeps, in (0, 1)
 };
 
 class MultilevelPreconditioner {
@@ -69,7 +80,9 @@ class MultilevelPreconditioner {
   struct Level {
     int size = 0;
     CompressedRows matrix;                  // A_l for l >= 1 (level 0 uses K)
-    std::vector<double> inverse_diagonal;   // 1 / (A_l)_ii
+    // D_B^-1: aggregate a's block inverse, row-major, at a * aggregate_size^2 (empty at the
+    // coarsest level).
+    std::vector<double> block_inverses;
     Aggregates aggregates;                  // nodes of level l + 1 (none at the coarsest)
     std::vector<double> to_parent;          // P_l's entry of each node (empty at the coarsest)
     std::vector<double> rhs;                // n_l x 4 (l >= 1): P^T of the finer residual
@@ -80,6 +93,11 @@ class MultilevelPreconditioner {
   const CompressedRows& Matrix(int l) const { return l == 0 ? *fine_ : levels_[l].matrix; }
   // P_l's entries from the field and P_0's magnitudes (one pass per level, parallel).
   void UpdateProlongations(const energy::PlaneField& field, int num_threads);
+  // D_B^-1 of level l from A_l's values.
+  void UpdateBlockInverses(int l, int num_threads);
+  // y = omega D_B^-1 v on aggregate a's rows (v holds just those rows); y is set or, with
+  // `accumulate`, added to.
+  void ApplyBlockInverse(int l, int a, const double* v, bool accumulate, double* y) const;
   // out = B_l b: one V-cycle from level l down.
   void Cycle(int l, const double* b, int num_threads, double* out);
 
