@@ -1,6 +1,7 @@
 #include "solvers/aggregation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace lpd::solvers {
@@ -24,6 +25,55 @@ Aggregates ConsecutiveRuns(int num_nodes, int run_length) {
   std::vector<int> parent(num_nodes);
   for (int i = 0; i < num_nodes; ++i) parent[i] = i / run_length;
   return AggregatesFromParents(std::move(parent), (num_nodes + run_length - 1) / run_length);
+}
+
+Aggregates RunsKeepingStrongPairs(const CompressedRows& a, int run_length, double threshold) {
+  const int n = a.num_rows();
+  std::vector<double> diagonal(n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
+      if (a.columns[e] == i) diagonal[i] = a.values[e];
+    }
+  }
+  // Each node's strongest neighbour, if the coupling reaches the threshold.
+  std::vector<int> strongest(n, -1);
+  for (int j = 0; j < n; ++j) {
+    double best = threshold;
+    for (int e = a.row_offsets[j]; e < a.row_offsets[j + 1]; ++e) {
+      const int i = a.columns[e];
+      if (i == j) continue;
+      const double strength = std::abs(a.values[e]) / std::sqrt(diagonal[i] * diagonal[j]);
+      if (strength >= best) {
+        best = strength;
+        strongest[j] = i;
+      }
+    }
+  }
+  auto wants_to_move = [&](int j) {
+    const int i = strongest[j];
+    if (i < 0 || i / run_length == j / run_length) return false;
+    return !(strongest[i] == j && i > j);  // of a mutual pair, the later node moves
+  };
+  std::vector<int> run(n);
+  std::vector<int> run_size((n + run_length - 1) / run_length, 0);
+  for (int j = 0; j < n; ++j) ++run_size[j / run_length];
+  for (int j = 0; j < n; ++j) {
+    run[j] = j / run_length;
+    if (!wants_to_move(j) || wants_to_move(strongest[j])) continue;
+    const int target = strongest[j] / run_length;
+    if (run_size[target] >= 2 * run_length) continue;
+    --run_size[run[j]];
+    ++run_size[target];
+    run[j] = target;
+  }
+  // Renumber the runs that kept a node.
+  std::vector<int> renumbered(run_size.size(), -1);
+  int count = 0;
+  for (size_t r = 0; r < run_size.size(); ++r) {
+    if (run_size[r] > 0) renumbered[r] = count++;
+  }
+  for (int& r : run) r = renumbered[r];
+  return AggregatesFromParents(std::move(run), count);
 }
 
 CompressedRows GalerkinPattern(const CompressedRows& a, const Aggregates& aggregates,

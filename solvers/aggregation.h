@@ -32,6 +32,13 @@ Aggregates AggregatesFromParents(std::vector<int> parent, int count);
 // Runs of `run_length` consecutive nodes (the last one may be shorter).
 Aggregates ConsecutiveRuns(int num_nodes, int run_length);
 
+// Runs of `run_length` consecutive nodes of A, except where a node's strongest coupling,
+// |a_ij| / sqrt(a_ii a_jj), is at least `threshold` and crosses two runs: then node j joins
+// the run of its strongest neighbour i, unless i moves itself (of two nodes that are each
+// other's strongest, the later one moves) or that run already has 2 run_length nodes.
+// Empty runs are dropped; aggregates keep the order of their runs.
+Aggregates RunsKeepingStrongPairs(const CompressedRows& a, int run_length, double threshold);
+
 // The sparsity pattern of P^T A P (values zero).
 CompressedRows GalerkinPattern(const CompressedRows& a, const Aggregates& aggregates,
                                int num_threads);

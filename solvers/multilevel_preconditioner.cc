@@ -27,7 +27,10 @@ MultilevelPreconditioner::MultilevelPreconditioner(const CompressedRows& k,
   levels_[0].size = k.num_rows();
   while (levels_.back().size > options.coarsest_size) {
     Level& fine = levels_.back();
-    fine.aggregates = ConsecutiveRuns(fine.size, options.aggregate_size);
+    fine.aggregates =
+        levels_.size() == 1
+            ? RunsKeepingStrongPairs(k, options.aggregate_size, options.strong_coupling)
+            : ConsecutiveRuns(fine.size, options.aggregate_size);
     Level coarse;
     coarse.size = fine.aggregates.count;
     coarse.matrix =
@@ -38,9 +41,17 @@ MultilevelPreconditioner::MultilevelPreconditioner(const CompressedRows& k,
     Level& level = levels_[l];
     const size_t size = level.size;
     if (l + 1 < levels_.size()) {
+      const Aggregates& aggregates = level.aggregates;
       level.to_parent.resize(size);
-      level.block_inverses.resize(static_cast<size_t>(level.aggregates.count) *
-                                  options_.aggregate_size * options_.aggregate_size);
+      level.position.resize(size);
+      level.block_offsets.assign(1, 0);
+      for (int a = 0; a < aggregates.count; ++a) {
+        const int first = aggregates.child_offsets[a];
+        const size_t children = aggregates.child_offsets[a + 1] - first;
+        level.block_offsets.push_back(level.block_offsets.back() + children * children);
+        for (size_t p = 0; p < children; ++p) level.position[aggregates.children[first + p]] = p;
+      }
+      level.block_inverses.resize(level.block_offsets.back());
     }
     level.solution.resize(4 * size);
     if (l > 0) {
@@ -115,26 +126,24 @@ void MultilevelPreconditioner::UpdateBlockInverses(int l, int num_threads) {
   Level& level = levels_[l];
   const CompressedRows& a = Matrix(l);
   const Aggregates& aggregates = level.aggregates;
-  const int stride = options_.aggregate_size * options_.aggregate_size;
 #pragma omp parallel num_threads(ThreadsForRows(level.size, num_threads))
   {
     Eigen::MatrixXd block;
 #pragma omp for schedule(static)
     for (int g = 0; g < aggregates.count; ++g) {
-      // Aggregates are runs of consecutive nodes (ConsecutiveRuns).
       const int first = aggregates.child_offsets[g];
       const int size = aggregates.child_offsets[g + 1] - first;
       block.setZero(size, size);
       for (int p = 0; p < size; ++p) {
-        const int i = first + p;
+        const int i = aggregates.children[first + p];
         for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
           const int j = a.columns[e];
-          if (j >= first && j < first + size) block(p, j - first) = a.values[e];
+          if (aggregates.parent[j] == g) block(p, level.position[j]) = a.values[e];
         }
       }
       // A principal block of an SPD matrix is SPD.
       Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-          level.block_inverses.data() + static_cast<size_t>(g) * stride, size, size) =
+          level.block_inverses.data() + level.block_offsets[g], size, size) =
           block.llt().solve(Eigen::MatrixXd::Identity(size, size));
     }
   }
@@ -143,15 +152,15 @@ void MultilevelPreconditioner::UpdateBlockInverses(int l, int num_threads) {
 void MultilevelPreconditioner::ApplyBlockInverse(int l, int a, const double* v, bool accumulate,
                                                  double* y) const {
   const Level& level = levels_[l];
-  const int first = level.aggregates.child_offsets[a];
-  const int size = level.aggregates.child_offsets[a + 1] - first;
-  const double* inverse = level.block_inverses.data() +
-                          static_cast<size_t>(a) * options_.aggregate_size * options_.aggregate_size;
+  const Aggregates& aggregates = level.aggregates;
+  const int first = aggregates.child_offsets[a];
+  const int size = aggregates.child_offsets[a + 1] - first;
+  const double* inverse = level.block_inverses.data() + level.block_offsets[a];
   const double omega = options_.jacobi_damping;
   for (int p = 0; p < size; ++p) {
     Eigen::Array4d sum = Eigen::Array4d::Zero();
     for (int q = 0; q < size; ++q) sum += inverse[p * size + q] * ConstRow(v + 4 * q);
-    Row row(y + 4 * (first + p));
+    Row row(y + 4 * aggregates.children[first + p]);
     if (accumulate) {
       row += omega * sum;
     } else {
@@ -171,11 +180,18 @@ void MultilevelPreconditioner::Cycle(int l, const double* b, int num_threads, do
   const Aggregates& aggregates = level.aggregates;
   double* x = level.solution.data();
   const int threads = ThreadsForRows(level.size, num_threads);
-  // Pre-smoothing from zero, x = S b, then P^T (b - A x) to the next level. Aggregates are
-  // runs of consecutive nodes, so an aggregate's rows of b are contiguous.
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (int a = 0; a < aggregates.count; ++a) {
-    ApplyBlockInverse(l, a, b + 4 * aggregates.child_offsets[a], false, x);
+  // Pre-smoothing from zero, x = S b, then P^T (b - A x) to the next level.
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<double> rows(4 * static_cast<size_t>(MaxAggregateSize()));
+#pragma omp for schedule(static)
+    for (int a = 0; a < aggregates.count; ++a) {
+      for (int k = aggregates.child_offsets[a]; k < aggregates.child_offsets[a + 1]; ++k) {
+        Row(rows.data() + 4 * (k - aggregates.child_offsets[a])) =
+            ConstRow(b + 4 * aggregates.children[k]);
+      }
+      ApplyBlockInverse(l, a, rows.data(), false, x);
+    }
   }
   Level& coarse = levels_[l + 1];
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -198,12 +214,13 @@ void MultilevelPreconditioner::Cycle(int l, const double* b, int num_threads, do
   }
 #pragma omp parallel num_threads(threads)
   {
-    std::vector<double> residual(4 * static_cast<size_t>(options_.aggregate_size));
+    std::vector<double> residual(4 * static_cast<size_t>(MaxAggregateSize()));
 #pragma omp for schedule(static)
     for (int a = 0; a < aggregates.count; ++a) {
       // The aggregate's rows of b - A x.
-      for (int i = aggregates.child_offsets[a]; i < aggregates.child_offsets[a + 1]; ++i) {
-        Row r(residual.data() + 4 * (i - aggregates.child_offsets[a]));
+      for (int k = aggregates.child_offsets[a]; k < aggregates.child_offsets[a + 1]; ++k) {
+        const int i = aggregates.children[k];
+        Row r(residual.data() + 4 * (k - aggregates.child_offsets[a]));
         a_l.RowTimes(x, i, r.data());
         r = ConstRow(b + 4 * i) - r;
         Row(out + 4 * i) = ConstRow(x + 4 * i);

@@ -4,13 +4,15 @@
 // neighbours much more strongly than the stitching diagonal eta alpha_i holds each plane in
 // place: the slow error modes are smooth over the surface. A multigrid cycle removes them on
 // coarser levels (the paper used AMG too). Measured on the procedural CAD part at k = 20:
-// 23 CG iterations per outer iteration at 25K points and 49 at 1M, where Jacobi needs 4x more
-// (README, Performance, explains what keeps the count growing).
+// 11 CG iterations per outer iteration at 25K points and 20 at 1M, where Jacobi needs 5-7x
+// more (README, Performance, explains what keeps the count growing).
 //
 // Levels. An aggregate of level l + 1 is a run of `aggregate_size` consecutive nodes of level
 // l (solvers/aggregation.h). Solving in Morton order (energy/spatial_order.h) makes these runs
-// spatially compact at every level, so no aggregation pass is needed and the hierarchy and
-// its sparsity patterns are built once per problem. Coarse matrices are
+// spatially compact at every level. On the finest level a point whose strongest coupling is
+// at least `strong_coupling` joins its partner's run (RunsKeepingStrongPairs): see "Why
+// blocks" below. The hierarchy and its sparsity patterns are built once per problem. Coarse
+// matrices are
 // Galerkin products A_{l+1} = P_l^T A_l P_l, A_0 = K, refreshed with K's values; the
 // coarsest level (at most `coarsest_size` nodes) is solved exactly.
 //
@@ -36,8 +38,11 @@
 // error where a strongly coupled pair moves together, against its other neighbours, is
 // barely damped by point Jacobi (the pair's coupling dominates both diagonals) and a coarse
 // node cannot represent it either (it moves the whole aggregate). Solving each aggregate's
-// block exactly removes it whenever the pair shares an aggregate. Measured on the CAD part at
-// k = 20: 25% fewer CG iterations at 1M points (49 -> 37), 12% less time in the global step.
+// block exactly removes it whenever the pair shares an aggregate, which is why the finest
+// aggregates keep strong pairs together: among pairs with beta_ij > 20x its median, 30% are
+// cut by plain runs of 8. Measured on the CAD part at k = 20, 1M points: 49 CG iterations
+// with point Jacobi on plain runs, 37 with block Jacobi, 20 with strong pairs kept together
+// (global step 4.3 -> 3.3 -> 2.4 s).
 
 #ifndef LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
 #define LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
@@ -56,11 +61,15 @@ struct MultilevelOptions {
   int aggregate_size = 8;       // nodes per aggregate
   int coarsest_size = 64;       // levels are added until one has at most this many nodes
   double jacobi_damping = 0.85;  // omega of the block-Jacobi sweeps, in (0, 1)
+  // A point whose strongest coupling |k_ij| / sqrt(k_ii k_jj) reaches this joins its
+  // partner's aggregate on the finest level (RunsKeepingStrongPairs); above 1, never.
+  double strong_coupling = 0.4;
 };
 
 class MultilevelPreconditioner {
  public:
-  // Builds the levels and their sparsity patterns from K's (its values are not read).
+  // Builds the levels and their sparsity patterns from K. The finest aggregates read K's
+  // values (its strong couplings); the values of later Updates may differ.
   MultilevelPreconditioner(const CompressedRows& k, const MultilevelOptions& options,
                            int num_threads);
 
@@ -80,9 +89,12 @@ class MultilevelPreconditioner {
   struct Level {
     int size = 0;
     CompressedRows matrix;                  // A_l for l >= 1 (level 0 uses K)
-    // D_B^-1: aggregate a's block inverse, row-major, at a * aggregate_size^2 (empty at the
-    // coarsest level).
+    // D_B^-1: aggregate a's block inverse, row-major, in block_inverses from
+    // block_offsets[a]; position[i] is node i's place among its aggregate's children. All
+    // empty at the coarsest level.
     std::vector<double> block_inverses;
+    std::vector<size_t> block_offsets;
+    std::vector<int> position;
     Aggregates aggregates;                  // nodes of level l + 1 (none at the coarsest)
     std::vector<double> to_parent;          // P_l's entry of each node (empty at the coarsest)
     std::vector<double> rhs;                // n_l x 4 (l >= 1): P^T of the finer residual
@@ -95,6 +107,8 @@ class MultilevelPreconditioner {
   void UpdateProlongations(const energy::PlaneField& field, int num_threads);
   // D_B^-1 of level l from A_l's values.
   void UpdateBlockInverses(int l, int num_threads);
+  // A bound on the nodes of any aggregate (RunsKeepingStrongPairs grows runs to at most 2x).
+  int MaxAggregateSize() const { return 2 * options_.aggregate_size; }
   // y = omega D_B^-1 v on aggregate a's rows (v holds just those rows); y is set or, with
   // `accumulate`, added to.
   void ApplyBlockInverse(int l, int a, const double* v, bool accumulate, double* y) const;

@@ -80,7 +80,8 @@ int TangentPlaneSmoother::Partner(int i, int incident) const {
 }
 
 void TangentPlaneSmoother::AssembleValues(const energy::EnergyParameters& parameters,
-                                          const energy::Variables& v, int num_threads) {
+                                          const double* m, const double* s_values,
+                                          int num_threads) {
   const auto& graph = problem_.graph;
   const int n = problem_.num_points();
   // Row-parallel: every row writes only its own entries.
@@ -89,8 +90,8 @@ void TangentPlaneSmoother::AssembleValues(const energy::EnergyParameters& parame
     double diagonal = parameters.eta * problem_.alpha[i];
     for (int e = graph.incident_offsets[i]; e < graph.incident_offsets[i + 1]; ++e) {
       const int p = graph.incident_pairs[e];
-      const double w = parameters.lambda * problem_.beta[p] * v.m[p];
-      const double s = v.s[p];
+      const double w = parameters.lambda * problem_.beta[p] * (m ? m[p] : 1.0);
+      const double s = s_values ? s_values[p] : 1.0;
       const bool i_is_first = graph.pairs[p][0] == i;
       // (e_i - s e_j)(e_i - s e_j)^T: +w at (i,i), +w s^2 at (j,j), -w s off the diagonal.
       diagonal += i_is_first ? w : w * s * s;
@@ -118,11 +119,14 @@ Eigen::Array4d TangentPlaneSmoother::Precondition(Preconditioner kind, const dou
 LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& parameters,
                                               const LinearSolverOptions& options,
                                               int num_threads, energy::Variables* v) {
-  AssembleValues(parameters, *v, num_threads);
   const int n = problem_.num_points();
   const Preconditioner kind = options.preconditioner;
+  if (kind == Preconditioner::kMultilevel && !multilevel_) {
+    AssembleValues(parameters, nullptr, nullptr, num_threads);
+    multilevel_.emplace(k_, MultilevelOptions{}, num_threads);
+  }
+  AssembleValues(parameters, v->m.data(), v->s.data(), num_threads);
   if (kind == Preconditioner::kMultilevel) {
-    if (!multilevel_) multilevel_.emplace(k_, MultilevelOptions{}, num_threads);
     // The near-null space of the smoothness term is the current plane field (t_i = s_ij t_j);
     // Alg. 1's first solve starts from T = 0, and then H stands in for it.
     const bool has_planes = v->t.squaredNorm() > 0.0;
@@ -191,7 +195,7 @@ LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& pa
 
 Eigen::SparseMatrix<double, Eigen::RowMajor> TangentPlaneSmoother::SystemMatrix(
     const energy::EnergyParameters& parameters, const energy::Variables& v) {
-  AssembleValues(parameters, v, 1);
+  AssembleValues(parameters, v.m.data(), v.s.data(), 1);
   const int n = problem_.num_points();
   Eigen::SparseMatrix<double, Eigen::RowMajor> k(n, n);
   std::vector<Eigen::Triplet<double>> entries;

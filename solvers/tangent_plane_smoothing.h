@@ -65,8 +65,9 @@ class TangentPlaneSmoother {
       const energy::EnergyParameters& parameters, const energy::Variables& v);
 
  private:
-  void AssembleValues(const energy::EnergyParameters& parameters, const energy::Variables& v,
-                      int num_threads);
+  // K's values for the line processes m and s (one per pair of M; null: all 1).
+  void AssembleValues(const energy::EnergyParameters& parameters, const double* m,
+                      const double* s, int num_threads);
   // The other point of the pair incident_pairs[incident] of point i.
   int Partner(int i, int incident) const;
   // z = M^-1 r for the chosen preconditioner; returns r.z per column.
@@ -75,7 +76,9 @@ class TangentPlaneSmoother {
   const energy::Problem& problem_;
   CompressedRows k_;                    // K: pattern built once, values by AssembleValues
   std::vector<int> diagonal_entry_;     // entry of K_ii per row
-  std::optional<MultilevelPreconditioner> multilevel_;  // built at the first multilevel solve
+  // Built at the first multilevel solve, from K with every m_ij = s_ij = 1: the problem's
+  // data alone decide the hierarchy, so a resumed run builds the same one.
+  std::optional<MultilevelPreconditioner> multilevel_;
   // CG work arrays (n x 4 each), kept between solves: residual, preconditioned residual,
   // search direction and K times it.
   std::vector<double> residual_, preconditioned_, direction_, product_;
