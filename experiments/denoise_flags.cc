@@ -53,7 +53,7 @@ DEFINE_double(linear_tolerance, 1e-4, "relative residual at which the T solve (E
 DEFINE_int32(max_cg_iterations, 2000, "conjugate-gradient iterations per T solve, at most");
 DEFINE_string(preconditioner, "multilevel",
               "of the T solve's conjugate gradients: jacobi (1/K_ii) or multilevel (a multigrid "
-              "V-cycle on runs of 8 points along the Morton curve)");
+              "V-cycle on runs of 8 points along the Morton curve, block-Jacobi sweeps)");
 // ---- joint solve (--solver=ceres) ----
 DEFINE_string(ceres_linear_solver, "sparse_schur",
               "sparse_schur, iterative_schur, sparse_normal_cholesky or cgnr");

@@ -5,7 +5,7 @@
 # procedural CAD part (sigma 0.5% of the diagonal) and k = 20, 50, 100. Every cell is one
 # `lpd bench` run (3 outer x 2 inner iterations) on all cores.
 # Usage: scripts/scaling_table.sh [N...]   (default 25000 50000 100000 200000 1000000;
-#        about 5 minutes on 2 cores, 7 GB peak at 1M points and k = 100)
+#        about 2 minutes on 2 cores, 7 GB peak at 1M points and k = 100)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=("$@")
