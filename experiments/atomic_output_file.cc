@@ -8,12 +8,15 @@
 
 namespace lpd::experiments {
 
-AtomicOutputFile::AtomicOutputFile(const std::string& path, bool overwrite) : path_(path) {
-  namespace fs = std::filesystem;
-  if (!overwrite && fs::exists(path)) {
+void RefuseExistingOutput(const std::string& path, bool overwrite) {
+  if (!overwrite && std::filesystem::exists(path)) {
     throw std::runtime_error("output file " + path +
                              " already exists (pass --overwrite to replace it)");
   }
+}
+
+AtomicOutputFile::AtomicOutputFile(const std::string& path, bool overwrite) : path_(path) {
+  RefuseExistingOutput(path, overwrite);
   temporary_path_ = path + ".tmp." + std::to_string(::getpid());
   stream_.open(temporary_path_, std::ios::binary | std::ios::trunc);
   if (!stream_) throw std::runtime_error("cannot create output file " + path);

@@ -12,6 +12,10 @@
 
 namespace lpd::experiments {
 
+// Throws std::runtime_error if `path` exists and !overwrite. Commands call it before their
+// work, so that a refused output costs nothing; AtomicOutputFile checks again.
+void RefuseExistingOutput(const std::string& path, bool overwrite);
+
 class AtomicOutputFile {
  public:
   // Throws std::runtime_error if the target exists (and !overwrite) or cannot be created.

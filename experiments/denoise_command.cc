@@ -9,6 +9,7 @@
 
 #include <gflags/gflags.h>
 
+#include "experiments/atomic_output_file.h"
 #include "experiments/commands.h"
 #include "experiments/denoise_flags.h"
 #include "experiments/denoise_state_file.h"
@@ -164,7 +165,9 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
       throw std::invalid_argument("output extension must be .ply, .xyz or .txt: " +
                                   FLAGS_output);
     }
+    RefuseExistingOutput(FLAGS_output, FLAGS_overwrite);
   }
+  if (!FLAGS_save_state.empty()) RefuseExistingOutput(FLAGS_save_state, FLAGS_overwrite);
 
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();

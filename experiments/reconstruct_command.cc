@@ -6,6 +6,7 @@
 
 #include <gflags/gflags.h>
 
+#include "experiments/atomic_output_file.h"
 #include "experiments/commands.h"
 #include "experiments/point_cloud_io.h"
 #include "experiments/surface_reconstruction.h"
@@ -27,6 +28,8 @@ int RunReconstructCommand(const std::vector<std::string>& arguments) {
   if (FLAGS_output == arguments[0]) {
     throw std::invalid_argument("OUTPUT must differ from INPUT (refusing to overwrite input)");
   }
+  CheckTriangleMeshPath(FLAGS_output);
+  RefuseExistingOutput(FLAGS_output, FLAGS_overwrite);
   ReconstructionOptions options;
   options.method = ParseReconstruction(FLAGS_reconstruction);
   options.scale_iterations = FLAGS_scale_iterations;

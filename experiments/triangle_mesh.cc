@@ -11,12 +11,17 @@ namespace lpd::experiments {
 
 using energy::Point3;
 
-void WriteTriangleMesh(const std::string& path, const TriangleMesh& mesh, bool overwrite) {
+void CheckTriangleMeshPath(const std::string& path) {
   const std::string extension = FileExtension(path);
   if (extension != "off" && extension != "ply") {
     throw std::runtime_error("cannot write '" + path +
                              "': the mesh extension must be .off or .ply");
   }
+}
+
+void WriteTriangleMesh(const std::string& path, const TriangleMesh& mesh, bool overwrite) {
+  CheckTriangleMeshPath(path);
+  const std::string extension = FileExtension(path);
   AtomicOutputFile file(path, overwrite);
   std::ofstream& out = file.stream();
   out.precision(std::numeric_limits<double>::max_digits10);

@@ -26,6 +26,8 @@ TriangleMesh ReadTriangleMesh(const std::string& path);
 // the file appears only complete, and an existing file is refused unless `overwrite`.
 // Throws std::runtime_error on another extension or a write error.
 void WriteTriangleMesh(const std::string& path, const TriangleMesh& mesh, bool overwrite);
+// Throws std::runtime_error unless `path` ends in .off or .ply.
+void CheckTriangleMeshPath(const std::string& path);
 
 // `count` samples drawn uniformly by area (a triangle is picked with probability proportional
 // to its area, then a uniform point in it), with the unit normal of their triangle. The same

@@ -91,12 +91,16 @@ for shape in collinear coplanar duplicates; do
   expect_finite "${shape}_ceres" "$dir/$shape.xyz" --solver=ceres
 done
 
-# An existing output file is never overwritten without --overwrite.
+# An existing output file is never overwritten without --overwrite, and is refused before
+# any work (no iteration is printed).
 echo "precious" >"$dir/keep.xyz"
-if "$lpd" denoise "$dir/good.xyz" -o "$dir/keep.xyz" --quiet >/dev/null 2>&1; then
+if "$lpd" denoise "$dir/good.xyz" -o "$dir/keep.xyz" --k=8 >"$dir/stdout" 2>"$dir/stderr"; then
   fail "existing output was overwritten"
 fi
 [ "$(cat "$dir/keep.xyz")" = "precious" ] || fail "existing output was modified"
+grep -q "iter" "$dir/stdout" "$dir/stderr" && fail "existing output refused only after the run"
+grep -q "already exists" "$dir/stderr" && echo "ok   existing output: $(cat "$dir/stderr")" ||
+  fail "existing output: $(cat "$dir/stderr")"
 # Output equal to input is refused.
 "$lpd" denoise "$dir/good.xyz" -o "$dir/good.xyz" --overwrite >/dev/null 2>&1 && fail "input overwritten"
 
@@ -136,6 +140,11 @@ expect_reconstruct_error() {
 expect_reconstruct_error missing_file "$dir/none.xyz" -o "$dir/mesh_missing_file.off"
 expect_reconstruct_error no_output "$dir/good.xyz"
 expect_reconstruct_error nan "$dir/nan.xyz" -o "$dir/mesh_nan.off"
+echo "precious" >"$dir/mesh_kept.off"
+expect_reconstruct_error existing_mesh "$dir/good.xyz" -o "$dir/mesh_kept.off"
+[ "$(cat "$dir/mesh_kept.off")" = "precious" ] || fail "reconstruct modified an existing mesh"
+rm "$dir/mesh_kept.off"
+expect_reconstruct_error obj_extension "$dir/good.xyz" -o "$dir/mesh_obj_extension.obj"
 expect_reconstruct_error unknown_method "$dir/good.xyz" -o "$dir/mesh_unknown_method.off" \
   --reconstruction=poisson
 expect_reconstruct_error bad_extension "$dir/good.xyz" -o "$dir/mesh_bad_extension.stl"
