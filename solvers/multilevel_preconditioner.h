@@ -4,17 +4,16 @@
 // neighbours much more strongly than the stitching diagonal eta alpha_i holds each plane in
 // place: the slow error modes are smooth over the surface. A multigrid cycle removes them on
 // coarser levels (the paper used AMG too). Measured on the procedural CAD part at k = 20:
-// 11 CG iterations per outer iteration at 25K points and 20 at 1M, where Jacobi needs 5-7x
-// more (README, Performance, explains what keeps the count growing).
+// 13 CG iterations per outer iteration at 25K points and 21 at 1M, where Jacobi needs 94 and
+// 234 (README, Performance, explains what keeps the count growing).
 //
 // Levels. An aggregate of level l + 1 is a run of `aggregate_size` consecutive nodes of level
 // l (solvers/aggregation.h). Solving in Morton order (energy/spatial_order.h) makes these runs
 // spatially compact at every level. On the finest level a point whose strongest coupling is
 // at least `strong_coupling` joins its partner's run (RunsKeepingStrongPairs): see "Why
 // blocks" below. The hierarchy and its sparsity patterns are built once per problem. Coarse
-// matrices are
-// Galerkin products A_{l+1} = P_l^T A_l P_l, A_0 = K, refreshed with K's values; the
-// coarsest level (at most `coarsest_size` nodes) is solved exactly.
+// matrices are Galerkin products A_{l+1} = P_l^T A_l P_l, A_0 = K, refreshed with K's
+// values; the coarsest level (at most `coarsest_size` nodes) is solved exactly.
 //
 // Prolongation. The near-null space of the smoothness term is any plane field with
 // t_i = s_ij t_j, and s_ij (Eq. 8) carries both the relative scale and the relative
@@ -41,8 +40,8 @@
 // block exactly removes it whenever the pair shares an aggregate, which is why the finest
 // aggregates keep strong pairs together: among pairs with beta_ij > 20x its median, 30% are
 // cut by plain runs of 8. Measured on the CAD part at k = 20, 1M points: 49 CG iterations
-// with point Jacobi on plain runs, 37 with block Jacobi, 20 with strong pairs kept together
-// (global step 4.3 -> 3.3 -> 2.4 s).
+// with point Jacobi on plain runs, 37 with block Jacobi, 21 with strong pairs kept together
+// (global step 4.2 -> 3.3 -> 2.4 s per outer iteration).
 
 #ifndef LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
 #define LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_

@@ -77,7 +77,7 @@ class TangentPlaneSmoother {
   CompressedRows k_;                    // K: pattern built once, values by AssembleValues
   std::vector<int> diagonal_entry_;     // entry of K_ii per row
   // Built at the first multilevel solve, from K with every m_ij = s_ij = 1: the problem's
-  // data alone decide the hierarchy, so a resumed run builds the same one.
+  // data, eta and lambda alone decide the hierarchy, so a resumed run builds the same one.
   std::optional<MultilevelPreconditioner> multilevel_;
   // CG work arrays (n x 4 each), kept between solves: residual, preconditioned residual,
   // search direction and K times it.
