@@ -6,7 +6,7 @@
 # median over the outer iterations of `lpd bench` runs (3 outer x 2 inner iterations, all
 # cores): one run at 1M points, three below 500K.
 # Usage: scripts/scaling_table.sh [N...]   (default 25000 50000 100000 200000 1000000;
-#        about 2 minutes on 2 cores, 7 GB peak at 1M points and k = 100)
+#        about 3 minutes on 2 cores, 7 GB peak at 1M points and k = 100)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=("$@")
