@@ -13,6 +13,12 @@ sizes=("$@")
 [ ${#sizes[@]} -gt 0 ] || sizes=(25000 50000 100000 200000 1000000)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# Column c of the per-iteration rows of bench.txt (iteration, local s, global s, whole s, CG
+# iterations), median over every outer iteration of every run.
+median_of_column() {
+  awk -v c="$1" '/^ +[0-9]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9]+$/ {print $c}' "$tmp/bench.txt" |
+    sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'
+}
 echo "| n | k | local s/iter | global s/iter | global us/point | CG iterations | peak MB | bytes/point |"
 echo "|---|---|---|---|---|---|---|---|"
 for n in "${sizes[@]}"; do
@@ -26,12 +32,6 @@ for n in "${sizes[@]}"; do
     for ((r = 0; r < repeats; ++r)); do
       ./build/lpd bench "$input" --k="$k" --max_iters=3 --energy_tolerance=0 >>"$tmp/bench.txt"
     done
-    # Column c of the per-iteration rows (iteration, local s, global s, whole s, CG
-    # iterations), median over every outer iteration of every run.
-    median_of_column() {
-      awk -v c="$1" '/^ +[0-9]+ +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9]+$/ {print $c}' "$tmp/bench.txt" |
-        sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'
-    }
     awk -v n="$n" -v k="$k" -v local_s="$(median_of_column 2)" \
         -v global_s="$(median_of_column 3)" -v cg="$(median_of_column 5)" '
       /^end to end/ { peak = $9; per_point = substr($11, 2) }

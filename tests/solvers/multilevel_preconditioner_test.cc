@@ -17,67 +17,40 @@
 namespace lpd::solvers {
 namespace {
 
-// A random sparse SPD matrix in full compressed rows (both triangles, sorted columns).
-struct RandomSymmetricMatrix {
-  Eigen::MatrixXd dense;
-  std::vector<int> row_offsets, columns;
-  std::vector<double> values;
-};
-
-void StoreRows(RandomSymmetricMatrix* m);
-
 // A random sparse, diagonally dominant SPD matrix.
-RandomSymmetricMatrix MakeMatrix(int n, uint64_t seed) {
+Eigen::MatrixXd MakeMatrix(int n, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   std::bernoulli_distribution keep(0.3);
-  RandomSymmetricMatrix m;
-  m.dense = Eigen::MatrixXd::Zero(n, n);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
-      if (keep(rng)) m.dense(i, j) = m.dense(j, i) = uniform(rng);
+      if (keep(rng)) m(i, j) = m(j, i) = uniform(rng);
     }
   }
-  for (int i = 0; i < n; ++i) m.dense(i, i) = m.dense.row(i).cwiseAbs().sum() + 1.0 + 0.5 * uniform(rng);
-  StoreRows(&m);
+  for (int i = 0; i < n; ++i) m(i, i) = m.row(i).cwiseAbs().sum() + 1.0 + 0.5 * uniform(rng);
   return m;
 }
 
 // A matrix shaped like K of Eq. (9): a positive diagonal plus, for random pairs, the rank-one
 // w (e_i - s e_j)(e_i - s e_j)^T with s of either sign and |s| in [0.2, 5]. It is not
 // diagonally dominant.
-RandomSymmetricMatrix MakePairMatrix(int n, uint64_t seed) {
+Eigen::MatrixXd MakePairMatrix(int n, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> weight(0.01, 100.0), scale(0.2, 5.0), mass(0.01, 0.1);
   std::bernoulli_distribution keep(0.2), flip(0.3);
-  RandomSymmetricMatrix m;
-  m.dense = Eigen::MatrixXd::Zero(n, n);
-  for (int i = 0; i < n; ++i) m.dense(i, i) = mass(rng);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) m(i, i) = mass(rng);
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       if (!keep(rng)) continue;
       Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
       v[i] = 1.0;
       v[j] = (flip(rng) ? 1.0 : -1.0) * scale(rng);
-      m.dense += weight(rng) * v * v.transpose();
+      m += weight(rng) * v * v.transpose();
     }
   }
-  StoreRows(&m);
   return m;
-}
-
-void StoreRows(RandomSymmetricMatrix* m) {
-  const int n = static_cast<int>(m->dense.rows());
-  m->row_offsets.push_back(0);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      if (m->dense(i, j) != 0.0) {
-        m->columns.push_back(j);
-        m->values.push_back(m->dense(i, j));
-      }
-    }
-    m->row_offsets.push_back(static_cast<int>(m->columns.size()));
-  }
 }
 
 // A field of planes all parallel to one direction, t_i = sign_i c_i u: the preconditioner
@@ -105,11 +78,25 @@ Eigen::MatrixXd ToDense(const CompressedRows& a) {
   return dense;
 }
 
-CompressedRows ToRows(const RandomSymmetricMatrix& m) { return {m.row_offsets, m.columns, m.values}; }
+// The nonzeros of a dense matrix in compressed rows (sorted columns).
+CompressedRows ToRows(const Eigen::MatrixXd& dense) {
+  CompressedRows rows;
+  rows.row_offsets.push_back(0);
+  for (int i = 0; i < dense.rows(); ++i) {
+    for (int j = 0; j < dense.cols(); ++j) {
+      if (dense(i, j) != 0.0) {
+        rows.columns.push_back(j);
+        rows.values.push_back(dense(i, j));
+      }
+    }
+    rows.row_offsets.push_back(static_cast<int>(rows.columns.size()));
+  }
+  return rows;
+}
 
 TEST(Aggregation, GalerkinProductMatchesTheDenseProductForAnyGrouping) {
   const int n = 40, count = 11;
-  const RandomSymmetricMatrix a = MakeMatrix(n, 5);
+  const Eigen::MatrixXd a = MakeMatrix(n, 5);
   std::mt19937_64 rng(6);
   std::vector<int> parent(n);
   for (int i = 0; i < n; ++i) parent[i] = i < count ? i : static_cast<int>(rng() % count);
@@ -125,32 +112,30 @@ TEST(Aggregation, GalerkinProductMatchesTheDenseProductForAnyGrouping) {
   for (int i = 0; i < n; ++i) dense_p(i, parent[i]) = p[i];
   CompressedRows coarse = GalerkinPattern(ToRows(a), aggregates, 2);
   GalerkinValues(ToRows(a), p, aggregates, 2, &coarse);
-  const Eigen::MatrixXd expected = dense_p.transpose() * a.dense * dense_p;
+  const Eigen::MatrixXd expected = dense_p.transpose() * a * dense_p;
   EXPECT_LT((ToDense(coarse) - expected).norm(), 1e-12 * expected.norm());
   // P = 1 when no entries are given; runs group consecutive nodes.
   const Aggregates runs = ConsecutiveRuns(n, 6);
   ASSERT_EQ(runs.count, 7);
   CompressedRows summed = GalerkinPattern(ToRows(a), runs, 1);
   GalerkinValues(ToRows(a), {}, runs, 1, &summed);
-  EXPECT_NEAR(ToDense(summed).sum(), a.dense.sum(), 1e-12 * a.dense.cwiseAbs().sum());
-  EXPECT_NEAR(ToDense(summed)(6, 6), a.dense.bottomRightCorner(4, 4).sum(), 1e-12);
+  EXPECT_NEAR(ToDense(summed).sum(), a.sum(), 1e-12 * a.cwiseAbs().sum());
+  EXPECT_NEAR(ToDense(summed)(6, 6), a.bottomRightCorner(4, 4).sum(), 1e-12);
 }
 
 // K's form on a path 0 - 1 - ... - n-1 with unit weights and s = 1, a unit diagonal (so a
 // path coupling has strength at most 1 / 3), and extra pairs of weight `strong_weight`.
 CompressedRows PathWithStrongPairs(int n, const std::vector<std::pair<int, int>>& strong_pairs,
                                    double strong_weight) {
-  RandomSymmetricMatrix m;
-  m.dense = Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Identity(n, n);
   auto add_pair = [&](int i, int j, double w) {
-    m.dense(i, i) += w;
-    m.dense(j, j) += w;
-    m.dense(i, j) -= w;
-    m.dense(j, i) -= w;
+    m(i, i) += w;
+    m(j, j) += w;
+    m(i, j) -= w;
+    m(j, i) -= w;
   };
   for (int i = 0; i + 1 < n; ++i) add_pair(i, i + 1, 1.0);
   for (const auto& [i, j] : strong_pairs) add_pair(i, j, strong_weight);
-  StoreRows(&m);
   return ToRows(m);
 }
 
@@ -228,7 +213,7 @@ TEST(MultilevelPreconditioner, MatchesTheDenseVCycle) {
   for (const auto& [n, aggregate_size, coarsest_size, levels] :
        {std::tuple{8, 8, 1, 2}, std::tuple{37, 3, 2, 4}, std::tuple{64, 4, 4, 3}}) {
     // K's form, whose heavy-tailed weights move points between runs on the finest level.
-    const RandomSymmetricMatrix k = MakePairMatrix(n, 10 + n);
+    const Eigen::MatrixXd k = MakePairMatrix(n, 10 + n);
     Eigen::VectorXd entries;
     const energy::PlaneField field = ParallelField(n, 20 + n, &entries);
     MultilevelOptions options;
@@ -243,7 +228,7 @@ TEST(MultilevelPreconditioner, MatchesTheDenseVCycle) {
     for (int i = 0; i < n; ++i) moved_points += parent[i] != parent[i / aggregate_size * aggregate_size];
     std::vector<Eigen::MatrixXd> coarse_matrices;
     const Eigen::MatrixXd expected =
-        DenseVCycle(k.dense, entries, parent, options, levels, &coarse_matrices);
+        DenseVCycle(k, entries, parent, options, levels, &coarse_matrices);
     // Coarse matrices agree up to the orientation of each coarse node.
     for (int l = 1; l < levels; ++l) {
       const Eigen::MatrixXd& dense = coarse_matrices[l - 1];
@@ -263,7 +248,7 @@ TEST(MultilevelPreconditioner, MatchesTheDenseVCycle) {
 TEST(MultilevelPreconditioner, IsSymmetricPositiveDefiniteForAnyFieldAndDamping) {
   // K's form, not diagonally dominant; damping close to the bound omega < 1.
   const int n = 50;
-  const RandomSymmetricMatrix k = MakePairMatrix(n, 3);
+  const Eigen::MatrixXd k = MakePairMatrix(n, 3);
   const energy::PlaneField field = energy::PlaneField::Random(n, 4);
   MultilevelOptions options;
   options.aggregate_size = 4;
