@@ -72,8 +72,8 @@ class MultilevelPreconditioner {
   MultilevelPreconditioner(const CompressedRows& k, const MultilevelOptions& options,
                            int num_threads);
 
-  // Refreshes P_l from `field` (the current T) and every A_l from K's values. K must keep
-  // its pattern and outlive the following Apply calls.
+  // Refreshes P_l from `field` (the current T; a zero field gives the constant one) and
+  // every A_l from K's values. K must keep its pattern and outlive the following Apply calls.
   void Update(const CompressedRows& k, const energy::PlaneField& field, int num_threads);
 
   // z = B r, one V-cycle, for 4 columns stored row-major (r, z: n x 4). Returns r.z per
