@@ -27,7 +27,11 @@ Aggregates ConsecutiveRuns(int num_nodes, int run_length) {
   return AggregatesFromParents(std::move(parent), (num_nodes + run_length - 1) / run_length);
 }
 
-Aggregates RunsKeepingStrongPairs(const CompressedRows& a, int run_length, double threshold) {
+namespace {
+
+// Each node's group: the connected components of the couplings with
+// |a_ij| >= threshold min(a_ii, a_jj), as the smallest member of the component (union-find).
+std::vector<int> StrongGroups(const CompressedRows& a, double threshold) {
   const int n = a.num_rows();
   std::vector<double> diagonal(n, 0.0);
   for (int i = 0; i < n; ++i) {
@@ -35,36 +39,62 @@ Aggregates RunsKeepingStrongPairs(const CompressedRows& a, int run_length, doubl
       if (a.columns[e] == i) diagonal[i] = a.values[e];
     }
   }
-  // Each node's strongest neighbour, if the coupling reaches the threshold.
-  std::vector<int> strongest(n, -1);
+  std::vector<int> group(n);
+  for (int i = 0; i < n; ++i) group[i] = i;
+  auto root = [&](int i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
   for (int j = 0; j < n; ++j) {
-    double best = threshold;
     for (int e = a.row_offsets[j]; e < a.row_offsets[j + 1]; ++e) {
       const int i = a.columns[e];
-      if (i == j) continue;
-      const double strength = std::abs(a.values[e]) / std::sqrt(diagonal[i] * diagonal[j]);
-      if (strength >= best) {
-        best = strength;
-        strongest[j] = i;
+      if (i < j && std::abs(a.values[e]) >= threshold * std::min(diagonal[i], diagonal[j])) {
+        const int root_i = root(i), root_j = root(j);
+        group[std::max(root_i, root_j)] = std::min(root_i, root_j);
       }
     }
   }
-  auto wants_to_move = [&](int j) {
-    const int i = strongest[j];
-    if (i < 0 || i / run_length == j / run_length) return false;
-    return !(strongest[i] == j && i > j);  // of a mutual pair, the later node moves
-  };
+  for (int i = 0; i < n; ++i) group[i] = root(i);
+  return group;
+}
+
+}  // namespace
+
+Aggregates RunsKeepingStrongGroups(const CompressedRows& a, int run_length, double threshold) {
+  const int n = a.num_rows();
+  const std::vector<int> group = StrongGroups(a, threshold);
+  // The members of group g (rooted at its smallest member g) are members[offsets[g] ...
+  // offsets[g + 1]), in increasing order.
+  std::vector<int> offsets(n + 1, 0), members(n);
+  for (int i = 0; i < n; ++i) ++offsets[group[i] + 1];
+  for (int i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
+  std::vector<int> next(offsets.begin(), offsets.end() - 1);
+  for (int i = 0; i < n; ++i) members[next[group[i]]++] = i;
+
   std::vector<int> run(n);
   std::vector<int> run_size((n + run_length - 1) / run_length, 0);
-  for (int j = 0; j < n; ++j) ++run_size[j / run_length];
-  for (int j = 0; j < n; ++j) {
-    run[j] = j / run_length;
-    if (!wants_to_move(j) || wants_to_move(strongest[j])) continue;
-    const int target = strongest[j] / run_length;
-    if (run_size[target] >= 2 * run_length) continue;
-    --run_size[run[j]];
-    ++run_size[target];
-    run[j] = target;
+  for (int i = 0; i < n; ++i) ++run_size[run[i] = i / run_length];
+  for (int g = 0; g < n; ++g) {
+    const int first = offsets[g], last = offsets[g + 1];
+    if (last - first < 2 || run[members[first]] == run[members[last - 1]]) continue;
+    // The run that holds most members (the first of equals); members come in run order.
+    int target = -1, best = 0;
+    for (int b = first; b < last;) {
+      int e = b;
+      while (e < last && run[members[e]] == run[members[b]]) ++e;
+      if (e - b > best) {
+        best = e - b;
+        target = run[members[b]];
+      }
+      b = e;
+    }
+    for (int b = first; b < last && run_size[target] < 2 * run_length; ++b) {
+      const int i = members[b];
+      if (run[i] == target) continue;
+      --run_size[run[i]];
+      ++run_size[target];
+      run[i] = target;
+    }
   }
   // Renumber the runs that kept a node.
   std::vector<int> renumbered(run_size.size(), -1);

@@ -7,8 +7,8 @@
 //
 // The aggregates used are runs of consecutive nodes: in Morton order (energy/spatial_order.h)
 // a run is spatially compact, at every level, and the hierarchy costs almost nothing to
-// build. On the finest level the runs give up a few points to keep strongly coupled pairs
-// together (RunsKeepingStrongPairs). Full strength-based aggregation (three rounds of
+// build. On the finest level the runs give up a few points to keep strongly coupled groups
+// together (RunsKeepingStrongGroups). Full strength-based aggregation (three rounds of
 // strongest-neighbour matching, after Notay) was measured too: with block-Jacobi sweeps it
 // needed more CG iterations at 1M points (25-30 against 21) and, its aggregates being
 // scattered in memory, twice the time per iteration.
@@ -34,12 +34,12 @@ Aggregates AggregatesFromParents(std::vector<int> parent, int count);
 // Runs of `run_length` consecutive nodes (the last one may be shorter).
 Aggregates ConsecutiveRuns(int num_nodes, int run_length);
 
-// Runs of `run_length` consecutive nodes of A, except where a node's strongest coupling,
-// |a_ij| / sqrt(a_ii a_jj), is at least `threshold` and crosses two runs: then node j joins
-// the run of its strongest neighbour i, unless i moves itself (of two nodes that are each
-// other's strongest, the later one moves) or that run already has 2 run_length nodes.
-// Empty runs are dropped; aggregates keep the order of their runs.
-Aggregates RunsKeepingStrongPairs(const CompressedRows& a, int run_length, double threshold);
+// Runs of `run_length` consecutive nodes of A, regrouped so that strongly coupled nodes
+// share a run. A coupling is strong if |a_ij| >= threshold min(a_ii, a_jj), that is, if it
+// holds that share of the diagonal of one of its two nodes. Each connected group of strong couplings that spans several runs gathers in the run holding
+// most of its members (the first of equals), as long as that run has fewer than
+// 2 run_length nodes. Empty runs are dropped; aggregates keep the order of their runs.
+Aggregates RunsKeepingStrongGroups(const CompressedRows& a, int run_length, double threshold);
 
 // The sparsity pattern of P^T A P (values zero).
 CompressedRows GalerkinPattern(const CompressedRows& a, const Aggregates& aggregates,

@@ -29,7 +29,7 @@ MultilevelPreconditioner::MultilevelPreconditioner(const CompressedRows& k,
     Level& fine = levels_.back();
     fine.aggregates =
         levels_.size() == 1
-            ? RunsKeepingStrongPairs(k, options.aggregate_size, options.strong_coupling)
+            ? RunsKeepingStrongGroups(k, options.aggregate_size, options.strong_coupling)
             : ConsecutiveRuns(fine.size, options.aggregate_size);
     Level coarse;
     coarse.size = fine.aggregates.count;

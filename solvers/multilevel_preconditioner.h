@@ -9,9 +9,9 @@
 //
 // Levels. An aggregate of level l + 1 is a run of `aggregate_size` consecutive nodes of level
 // l (solvers/aggregation.h). Solving in Morton order (energy/spatial_order.h) makes these runs
-// spatially compact at every level. On the finest level a point whose strongest coupling is
-// at least `strong_coupling` joins its partner's run (RunsKeepingStrongPairs): see "Why
-// blocks" below. The hierarchy and its sparsity patterns are built once per problem. Coarse
+// spatially compact at every level. On the finest level the runs are regrouped so that
+// strongly coupled points share one (RunsKeepingStrongGroups): see "Why blocks" below. The
+// hierarchy and its sparsity patterns are built once per problem. Coarse
 // matrices are Galerkin products A_{l+1} = P_l^T A_l P_l, A_0 = K, refreshed with K's
 // values; the coarsest level (at most `coarsest_size` nodes) is solved exactly.
 //
@@ -60,8 +60,8 @@ struct MultilevelOptions {
   int aggregate_size = 8;       // nodes per aggregate
   int coarsest_size = 64;       // levels are added until one has at most this many nodes
   double jacobi_damping = 0.85;  // omega of the block-Jacobi sweeps, in (0, 1)
-  // A point whose strongest coupling |k_ij| / sqrt(k_ii k_jj) reaches this joins its
-  // partner's aggregate on the finest level (RunsKeepingStrongPairs); above 1, never.
+  // Points coupled by |k_ij| >= strong_coupling min(k_ii, k_jj) share an aggregate on the
+  // finest level (RunsKeepingStrongGroups); above 1, no coupling is strong.
   double strong_coupling = 0.4;
 };
 
@@ -106,7 +106,7 @@ class MultilevelPreconditioner {
   void UpdateProlongations(const energy::PlaneField& field, int num_threads);
   // D_B^-1 of level l from A_l's values.
   void UpdateBlockInverses(int l, int num_threads);
-  // A bound on the nodes of any aggregate (RunsKeepingStrongPairs grows runs to at most 2x).
+  // A bound on the nodes of any aggregate (RunsKeepingStrongGroups grows runs to at most 2x).
   int MaxAggregateSize() const { return 2 * options_.aggregate_size; }
   // y = omega D_B^-1 v on aggregate a's rows (v holds just those rows); y is set or, with
   // `accumulate`, added to.

@@ -124,11 +124,11 @@ TEST(Aggregation, GalerkinProductMatchesTheDenseProductForAnyGrouping) {
   EXPECT_NEAR(ToDense(summed)(6, 6), a.bottomRightCorner(4, 4).sum(), 1e-12);
 }
 
-// K's form on a path 0 - 1 - ... - n-1 with unit weights and s = 1, a unit diagonal (so a
-// path coupling has strength at most 1 / 3), and extra pairs of weight `strong_weight`.
+// K's form on a path 0 - 1 - ... - n-1 with unit weights and s = 1, a diagonal of 2 (so a
+// path coupling holds at most 1 / 3 of a diagonal), and extra pairs of weight `strong_weight`.
 CompressedRows PathWithStrongPairs(int n, const std::vector<std::pair<int, int>>& strong_pairs,
                                    double strong_weight) {
-  Eigen::MatrixXd m = Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd m = 2.0 * Eigen::MatrixXd::Identity(n, n);
   auto add_pair = [&](int i, int j, double w) {
     m(i, i) += w;
     m(j, j) += w;
@@ -140,27 +140,29 @@ CompressedRows PathWithStrongPairs(int n, const std::vector<std::pair<int, int>>
   return ToRows(m);
 }
 
-TEST(Aggregation, RunsKeepingStrongPairsMovesOnlyTheLaterPointOfAStrongPair) {
-  // Runs of 4: {0..3} {4..7} {8..11} {12..15}. 5 and 9 are each other's strongest
-  // neighbour (strength 100 / 103), so 9 joins 5's run; 2 - 14 likewise moves 14.
-  const CompressedRows a = PathWithStrongPairs(16, {{5, 9}, {2, 14}}, 100.0);
-  const Aggregates aggregates = RunsKeepingStrongPairs(a, 4, 0.4);
-  std::vector<int> expected = {0, 0, 0, 0, 1, 1, 1, 1, 2, 1, 2, 2, 3, 3, 0, 3};
+TEST(Aggregation, RunsKeepingStrongGroupsGathersEachGroupInTheRunHoldingMostOfIt) {
+  // Runs of 4: {0..3} {4..7} {8..11} {12..15}. The chain 5 - 9 - 10 is one group, two of
+  // whose points are in run 2, so 5 joins them; the group {2, 14} has one point in each of
+  // two runs, so 14 joins the first.
+  const CompressedRows a = PathWithStrongPairs(16, {{5, 9}, {9, 10}, {2, 14}}, 100.0);
+  const Aggregates aggregates = RunsKeepingStrongGroups(a, 4, 0.4);
+  const std::vector<int> expected = {0, 0, 0, 0, 1, 2, 1, 1, 2, 2, 2, 2, 3, 3, 0, 3};
   EXPECT_EQ(aggregates.parent, expected);
   EXPECT_EQ(aggregates.count, 4);
-  // Path couplings (strength <= 1 / 3) move nothing; a threshold above 1 never moves.
-  EXPECT_EQ(RunsKeepingStrongPairs(a, 4, 0.6).parent, expected);
-  EXPECT_EQ(RunsKeepingStrongPairs(a, 4, 2.0).parent, ConsecutiveRuns(16, 4).parent);
+  // Path couplings (share <= 1 / 3) gather nothing; a threshold above 1 never does.
+  EXPECT_EQ(RunsKeepingStrongGroups(a, 4, 0.34).parent, expected);
+  EXPECT_EQ(RunsKeepingStrongGroups(a, 4, 2.0).parent, ConsecutiveRuns(16, 4).parent);
+  // A coupling of 0.5 holds 0.5 / 3.5 of either diagonal: weak at 0.4.
   const CompressedRows weak = PathWithStrongPairs(16, {{5, 9}}, 0.5);
-  EXPECT_EQ(RunsKeepingStrongPairs(weak, 4, 0.4).parent, ConsecutiveRuns(16, 4).parent);
+  EXPECT_EQ(RunsKeepingStrongGroups(weak, 4, 0.4).parent, ConsecutiveRuns(16, 4).parent);
 }
 
-TEST(Aggregation, RunsKeepingStrongPairsCapsARunAtTwiceItsLengthAndDropsEmptyRuns) {
-  // Runs of 2: {0, 1} {2, 3} ... Points 3, 5, 7 and 9 each couple to 0 with strength about
-  // 0.49; 0 stays (its strongest, 9, is later). 3 moves in first, then 5; the run is full at
-  // 4, so 7 and 9 stay.
+TEST(Aggregation, RunsKeepingStrongGroupsCapsARunAtTwiceItsLengthAndDropsEmptyRuns) {
+  // Runs of 2: {0, 1} {2, 3} ... Points 3, 5, 7 and 9 each couple strongly to 0, one group
+  // with one point in each of five runs: it gathers in run 0. 3 moves in first, then 5; the
+  // run is full at 4, so 7 and 9 stay.
   const CompressedRows a = PathWithStrongPairs(10, {{0, 3}, {0, 5}, {0, 7}, {0, 9}}, 100.0);
-  const Aggregates aggregates = RunsKeepingStrongPairs(a, 2, 0.4);
+  const Aggregates aggregates = RunsKeepingStrongGroups(a, 2, 0.4);
   EXPECT_EQ(aggregates.parent[3], aggregates.parent[0]);
   EXPECT_EQ(aggregates.parent[5], aggregates.parent[0]);
   EXPECT_NE(aggregates.parent[7], aggregates.parent[0]);
@@ -172,13 +174,13 @@ TEST(Aggregation, RunsKeepingStrongPairsCapsARunAtTwiceItsLengthAndDropsEmptyRun
   }
   // A run whose every point moves out disappears: runs of 1, point 1 joins point 0.
   const CompressedRows pair = PathWithStrongPairs(3, {{0, 1}}, 100.0);
-  const Aggregates merged = RunsKeepingStrongPairs(pair, 1, 0.4);
+  const Aggregates merged = RunsKeepingStrongGroups(pair, 1, 0.4);
   EXPECT_EQ(merged.count, 2);
   EXPECT_EQ(merged.parent, (std::vector<int>{0, 0, 1}));
 }
 
 // The V-cycle's operator from its recursion, for P_0 with `entries` on the aggregates
-// `parent` (RunsKeepingStrongPairs, tested above) and P_l = 1 on runs of `aggregate_size`
+// `parent` (RunsKeepingStrongGroups, tested above) and P_l = 1 on runs of `aggregate_size`
 // above (the orientations the preconditioner picks flip whole coarse columns, which leaves
 // the operator unchanged):
 //   B_L = A_L^-1,  B_l = 2S - SAS + (I - SA) P B_{l+1} P^T (I - AS),  S = omega D_B^-1,
@@ -225,7 +227,7 @@ TEST(MultilevelPreconditioner, MatchesTheDenseVCycle) {
     preconditioner.Update(rows, field, 2);
     ASSERT_EQ(preconditioner.num_levels(), levels) << n;
     const std::vector<int> parent =
-        RunsKeepingStrongPairs(rows, aggregate_size, options.strong_coupling).parent;
+        RunsKeepingStrongGroups(rows, aggregate_size, options.strong_coupling).parent;
     for (int i = 0; i < n; ++i) moved_points += parent[i] != parent[i / aggregate_size * aggregate_size];
     std::vector<Eigen::MatrixXd> coarse_matrices;
     const Eigen::MatrixXd expected =
