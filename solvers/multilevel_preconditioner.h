@@ -4,7 +4,7 @@
 // neighbours much more strongly than the stitching diagonal eta alpha_i holds each plane in
 // place: the slow error modes are smooth over the surface. A multigrid cycle removes them on
 // coarser levels (the paper used AMG too). Measured on the procedural CAD part at k = 20:
-// 13 CG iterations per outer iteration at 25K points and 21 at 1M, where Jacobi needs 94 and
+// 10 CG iterations per outer iteration at 25K points and 21 at 1M, where Jacobi needs 94 and
 // 234 (README, Performance, explains what keeps the count growing).
 //
 // Levels. An aggregate of level l + 1 is a run of `aggregate_size` consecutive nodes of level
@@ -38,10 +38,12 @@
 // barely damped by point Jacobi (the pair's coupling dominates both diagonals) and a coarse
 // node cannot represent it either (it moves the whole aggregate). Solving each aggregate's
 // block exactly removes it whenever the pair shares an aggregate, which is why the finest
-// aggregates keep strong pairs together: among pairs with beta_ij > 20x its median, 30% are
-// cut by plain runs of 8. Measured on the CAD part at k = 20, 1M points: 49 CG iterations
-// with point Jacobi on plain runs, 37 with block Jacobi, 21 with strong pairs kept together
-// (global step 4.2 -> 3.3 -> 2.4 s per outer iteration).
+// aggregates keep strongly coupled points together: among pairs with beta_ij > 20x its
+// median, 30% are cut by plain runs of 8. Measured on the CAD part at k = 20, 1M points: 49
+// CG iterations with point Jacobi on plain runs, 37 with block Jacobi, 21 with strong pairs
+// kept together (global step 4.2 -> 3.3 -> 2.4 s per outer iteration). Whole groups, not
+// pairs: in a chain of near-coincident points no single pair dominates every diagonal, and
+// gathering the connected groups of strong couplings took the 25K-point count from 13 to 10.
 
 #ifndef LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
 #define LPD_SOLVERS_MULTILEVEL_PRECONDITIONER_H_
