@@ -36,9 +36,10 @@ Aggregates ConsecutiveRuns(int num_nodes, int run_length);
 
 // Runs of `run_length` consecutive nodes of A, regrouped so that strongly coupled nodes
 // share a run. A coupling is strong if |a_ij| >= threshold min(a_ii, a_jj), that is, if it
-// holds that share of the diagonal of one of its two nodes. Each connected group of strong couplings that spans several runs gathers in the run holding
-// most of its members (the first of equals), as long as that run has fewer than
-// 2 run_length nodes. Empty runs are dropped; aggregates keep the order of their runs.
+// holds that share of the diagonal of one of its two nodes. Each connected group of strong
+// couplings that spans several runs gathers in the run holding most of its members (the
+// first of equals), as long as that run has fewer than 2 run_length nodes. Empty runs are
+// dropped; aggregates keep the order of their runs.
 Aggregates RunsKeepingStrongGroups(const CompressedRows& a, int run_length, double threshold);
 
 // The sparsity pattern of P^T A P (values zero).

@@ -11,9 +11,9 @@
 // l (solvers/aggregation.h). Solving in Morton order (energy/spatial_order.h) makes these runs
 // spatially compact at every level. On the finest level the runs are regrouped so that
 // strongly coupled points share one (RunsKeepingStrongGroups): see "Why blocks" below. The
-// hierarchy and its sparsity patterns are built once per problem. Coarse
-// matrices are Galerkin products A_{l+1} = P_l^T A_l P_l, A_0 = K, refreshed with K's
-// values; the coarsest level (at most `coarsest_size` nodes) is solved exactly.
+// hierarchy and its sparsity patterns are built once per problem. Coarse matrices are
+// Galerkin products A_{l+1} = P_l^T A_l P_l, A_0 = K, refreshed with K's values; the
+// coarsest level (at most `coarsest_size` nodes) is solved exactly.
 //
 // Prolongation. The near-null space of the smoothness term is any plane field with
 // t_i = s_ij t_j, and s_ij (Eq. 8) carries both the relative scale and the relative

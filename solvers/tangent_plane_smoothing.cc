@@ -130,7 +130,8 @@ LinearSolveStats TangentPlaneSmoother::Update(const energy::EnergyParameters& pa
     // The near-null space of the smoothness term is the current plane field (t_i = s_ij t_j).
     // Alg. 1's first solve has T = 0 and S = 1, where it is the constant field, which is
     // what a zero field gives. H is no substitute: its orientations are arbitrary until S
-    // has aligned them (at 1M points the first solve took 19 CG iterations with H, 9 now).
+    // has aligned them (at 1M points the first solve takes 19 CG iterations with H, 9 with
+    // the constant field).
     multilevel_->Update(k_, v->t, num_threads);
   }
   for (auto* work : {&residual_, &preconditioned_, &direction_, &product_}) {

@@ -74,7 +74,9 @@ energy::PlaneField ParallelField(int n, uint64_t seed, Eigen::VectorXd* entries)
 Eigen::MatrixXd ToDense(const CompressedRows& a) {
   Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(a.num_rows(), a.num_rows());
   for (int i = 0; i < a.num_rows(); ++i) {
-    for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) dense(i, a.columns[e]) = a.values[e];
+    for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
+      dense(i, a.columns[e]) = a.values[e];
+    }
   }
   return dense;
 }
@@ -228,7 +230,9 @@ TEST(MultilevelPreconditioner, MatchesTheDenseVCycle) {
     ASSERT_EQ(preconditioner.num_levels(), levels) << n;
     const std::vector<int> parent =
         RunsKeepingStrongGroups(rows, aggregate_size, options.strong_coupling).parent;
-    for (int i = 0; i < n; ++i) moved_points += parent[i] != parent[i / aggregate_size * aggregate_size];
+    for (int i = 0; i < n; ++i) {
+      moved_points += parent[i] != parent[i / aggregate_size * aggregate_size];
+    }
     std::vector<Eigen::MatrixXd> coarse_matrices;
     const Eigen::MatrixXd expected =
         DenseVCycle(k, entries, parent, options, levels, &coarse_matrices);
