@@ -5,9 +5,11 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include <gflags/gflags.h>
 
+#include "energy/term_balance.h"
 #include "experiments/commands.h"
 #include "experiments/denoise_flags.h"
 #include "experiments/peak_memory.h"
@@ -34,7 +36,12 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
   options.minimizer.trace_blocks = false;
   const energy::PointList points = ReadPoints(arguments[0]);
   const double read_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  const solvers::DenoiseResult result = solvers::DenoisePointSet(points, options);
+  solvers::DenoiseState state = solvers::StartDenoising(points, options);
+  const double balance =
+      energy::MedianSmoothnessToStitchingRatio(state.problem, options.minimizer.energy);
+  solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state);
+  const solvers::DenoiseResult result =
+      solvers::FinishDenoising(state, options, std::move(summary));
   const double total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
   std::printf("input %s: n = %zu, k = %d, threads = %d, %d outer x %d inner iterations\n",
@@ -43,6 +50,8 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
               options.minimizer.inner_iterations);
   std::printf("read %.3f s, k-NN graph and weights %.3f s\n", read_seconds,
               result.setup_seconds);
+  // How close the T system is to a graph Laplacian (energy/term_balance.h).
+  std::printf("smoothness / stitching share of K's diagonal: median %.3g\n", balance);
   std::printf("iter  local(H,L) s  global(T,M,S) s  iteration s  cg iterations\n");
   std::vector<double> local, global, whole;
   for (const solvers::IterationRecord& r : result.summary.iterations) {
