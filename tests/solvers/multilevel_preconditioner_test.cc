@@ -4,6 +4,7 @@
 #include "solvers/aggregation.h"
 
 #include <algorithm>
+#include <array>
 #include <random>
 
 #include <Eigen/Dense>
@@ -279,28 +280,41 @@ TEST(MultilevelPreconditioner, IsSymmetricPositiveDefiniteForAnyFieldAndDamping)
             0.0);
 }
 
-TEST(MultilevelPreconditioner, NeedsFewerConjugateGradientStepsThanJacobi) {
-  // A noisy sphere in Morton order after one outer iteration of Alg. 1, as in a real run.
-  energy::PointList points = testing::NoisySphere(20000, 0.005, 4);
+// A noisy 20K-point sphere in Morton order, as a real run solves it.
+energy::Problem MortonOrderedSphere() {
+  const energy::PointList points = testing::NoisySphere(20000, 0.005, 4);
   energy::PointList sorted;
   for (int i : energy::MortonOrder(points)) sorted.push_back(points[i]);
-  const energy::Problem problem = energy::BuildProblem(sorted, energy::ProblemOptions{}, 2);
-  energy::Variables v = energy::InitialVariables(problem);
-  AlternatingMinimizer::Options options;
-  options.max_iterations = 1;
-  options.num_threads = 2;
-  AlternatingMinimizer::Minimize(problem, options, &v, nullptr);
-  int iterations[2];
+  return energy::BuildProblem(sorted, energy::ProblemOptions{}, 2);
+}
+
+// CG iterations to solve Eq. (9) from `v` to 1e-8, with Jacobi ([0]) and the multigrid ([1]).
+std::array<int, 2> IterationsToConverge(const energy::Problem& problem,
+                                        const energy::EnergyParameters& parameters,
+                                        const energy::Variables& v) {
+  std::array<int, 2> iterations;
   for (Preconditioner kind : {Preconditioner::kJacobi, Preconditioner::kMultilevel}) {
     energy::Variables start = v;
     LinearSolverOptions linear;
     linear.relative_tolerance = 1e-8;
     linear.preconditioner = kind;
     TangentPlaneSmoother smoother(problem);
-    const LinearSolveStats stats = smoother.Update(options.energy, linear, 2, &start);
+    const LinearSolveStats stats = smoother.Update(parameters, linear, 2, &start);
     EXPECT_LE(stats.relative_residual, 1e-8);
-    iterations[static_cast<int>(kind)] = stats.iterations;
+    iterations[kind == Preconditioner::kJacobi ? 0 : 1] = stats.iterations;
   }
+  return iterations;
+}
+
+TEST(MultilevelPreconditioner, NeedsFewerConjugateGradientStepsThanJacobi) {
+  // After one outer iteration of Alg. 1, as in a real run.
+  const energy::Problem problem = MortonOrderedSphere();
+  energy::Variables v = energy::InitialVariables(problem);
+  AlternatingMinimizer::Options options;
+  options.max_iterations = 1;
+  options.num_threads = 2;
+  AlternatingMinimizer::Minimize(problem, options, &v, nullptr);
+  const std::array<int, 2> iterations = IterationsToConverge(problem, options.energy, v);
   // Measured: 128 Jacobi and 13 multigrid iterations. This bound rejects plain Morton runs
   // (25 iterations) and point-Jacobi sweeps (36).
   EXPECT_LT(iterations[1], 0.15 * iterations[0])
@@ -311,25 +325,12 @@ TEST(MultilevelPreconditioner, FirstSolveOfAlgorithmOneUsesTheConstantNearNullSp
   // Alg. 1's first global step: H the plane fits (orientations arbitrary), T = 0, M = S = 1.
   // The near-null space of K is then the constant field; one built from H flips signs at
   // random. A tenth of the default eta lets the smoothness term dominate, as at larger n.
-  energy::PointList points = testing::NoisySphere(20000, 0.005, 4);
-  energy::PointList sorted;
-  for (int i : energy::MortonOrder(points)) sorted.push_back(points[i]);
-  const energy::Problem problem = energy::BuildProblem(sorted, energy::ProblemOptions{}, 2);
+  const energy::Problem problem = MortonOrderedSphere();
   energy::EnergyParameters parameters;
   parameters.eta /= 10.0;
   energy::Variables v = energy::InitialVariables(problem);
   v.h = InitialState(problem, parameters, Initialization::kPlaneFit, 2).h;
-  int iterations[2];
-  for (Preconditioner kind : {Preconditioner::kJacobi, Preconditioner::kMultilevel}) {
-    energy::Variables start = v;
-    LinearSolverOptions linear;
-    linear.relative_tolerance = 1e-8;
-    linear.preconditioner = kind;
-    TangentPlaneSmoother smoother(problem);
-    const LinearSolveStats stats = smoother.Update(parameters, linear, 2, &start);
-    EXPECT_LE(stats.relative_residual, 1e-8);
-    iterations[static_cast<int>(kind)] = stats.iterations;
-  }
+  const std::array<int, 2> iterations = IterationsToConverge(problem, parameters, v);
   // Measured: 183 Jacobi and 22 multigrid iterations; with H as the field, 39.
   EXPECT_LT(iterations[1], 0.15 * iterations[0])
       << "jacobi " << iterations[0] << ", multilevel " << iterations[1];
