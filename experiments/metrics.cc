@@ -79,7 +79,8 @@ Metrics ComputeMetrics(const PointList& output, const GroundTruth& truth, int nu
   metrics.snr_db = 10.0 * std::log10(signal / metrics.mse);
 
   if (truth.surface_distances) {
-    const std::vector<double> d = truth.surface_distances(output, num_threads);
+    metrics.distances = truth.surface_distances(output, num_threads);
+    const std::vector<double>& d = metrics.distances;
     double sum = 0.0, sum_squared = 0.0, max = 0.0;
     for (double x : d) {
       sum += x;

@@ -31,6 +31,8 @@ struct Metrics {
   double mean_distance = 0.0;
   double rms_distance = 0.0;
   double max_distance = 0.0;
+  // Each output point's distance to the clean surface; empty when not known.
+  std::vector<double> distances;
 
   // Named values, model frame and normalized: mse, mse_normalized (= mse / diagonal^2), mcd,
   // mcd_normalized, snr_db, mean_distance, mean_distance_normalized, rms_..., max_...

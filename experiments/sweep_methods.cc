@@ -151,17 +151,17 @@ std::vector<std::pair<std::string, std::string>> EffectiveParameters(
 MethodRun RunMethod(const MethodConfig& method, const energy::PointList& input, int num_threads) {
   solvers::Solver solver;
   if (DenoiseSolver(method.method, &solver)) return RunDenoiser(method, solver, input, num_threads);
-  EffectiveParameters(method);  // validates
-  MethodRun run;
   std::vector<std::pair<std::string, std::string>> unused_values;
-  if (const Smoother smooth = Baseline(method, &unused_values)) {
-    const auto start = std::chrono::steady_clock::now();
-    run.output = smooth(input);
-    run.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  } else {
+  const Smoother smooth = Baseline(method, &unused_values);
+  MethodRun run;
+  if (!smooth) {
+    EffectiveParameters(method);  // throws unless the method is "none" without parameters
     run.output = input;
+    return run;
   }
+  const auto start = std::chrono::steady_clock::now();
+  run.output = smooth(input);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
 

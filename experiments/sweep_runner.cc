@@ -127,10 +127,11 @@ std::string EnergyTermsText(const std::vector<energy::EnergyBreakdown>& terms) {
 }
 
 // RESULTS/clouds/ID_input.ply (the noisy input with the method's indicators and the true
-// outlier labels) and ID_output.ply (the output with its distance to the clean surface).
+// outlier labels) and ID_output.ply (the output with `distances`, each output point's
+// distance to the clean surface, unless empty).
 void SaveClouds(const std::string& directory, const std::string& cell_id,
-                const CellInput& input, const MethodRun& run, const GroundTruth* truth,
-                int num_threads) {
+                const CellInput& input, const MethodRun& run,
+                const std::vector<double>& distances) {
   const std::string clouds = directory + "/clouds";
   std::filesystem::create_directories(clouds);
   auto as_float = [](const auto& values) { return std::vector<float>(values.begin(), values.end()); };
@@ -142,10 +143,7 @@ void SaveClouds(const std::string& directory, const std::string& cell_id,
   WritePointCloud(clouds + "/" + cell_id + "_input.ply", noisy, /*overwrite=*/true);
   PointCloud output;
   output.points = run.output;
-  if (truth && truth->surface_distances) {
-    output.scalars.emplace_back("distance",
-                                as_float(truth->surface_distances(run.output, num_threads)));
-  }
+  if (!distances.empty()) output.scalars.emplace_back("distance", as_float(distances));
   WritePointCloud(clouds + "/" + cell_id + "_output.ply", output, /*overwrite=*/true);
 }
 
@@ -208,11 +206,11 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
 
   record.Add("num_output", static_cast<long>(run.output.size()));
   const GroundTruth* truth = loaded.truth.get();
+  Metrics metrics;
   if (truth) {
     record.Add("ground_truth", truth->description);
-    for (const auto& [name, value] : ComputeMetrics(run.output, *truth, num_threads).Columns()) {
-      record.Add(name, value);
-    }
+    metrics = ComputeMetrics(run.output, *truth, num_threads);
+    for (const auto& [name, value] : metrics.Columns()) record.Add(name, value);
   }
   if (!input.is_outlier.empty() && !run.outlier_flags.empty() && num_outliers > 0) {
     AddDetection("outlier", ScoreDetection(run.outlier_flags, input.is_outlier), &record);
@@ -233,7 +231,7 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
   record.Add("energy_terms_trace", EnergyTermsText(run.energy_terms));
   record.Add("mu_l_used", run.mu_l);
   if (config.save_clouds) {
-    SaveClouds(options.results_directory, cell.id, input, run, truth, num_threads);
+    SaveClouds(options.results_directory, cell.id, input, run, metrics.distances);
   }
   SaveMeshes(config, options.results_directory, cell.id, run, &record);
   record.Add("termination", run.termination);

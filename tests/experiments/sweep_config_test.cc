@@ -1,5 +1,5 @@
 // Sweep configs: grids expand as cartesian products, errors name the file and line, results
-// round-trip through JSON, and a rerun skips finished cells.
+// round-trip through JSON, a rerun skips finished cells, and saved clouds carry distances.
 #include "experiments/sweep_config.h"
 
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/point_cloud_io.h"
 #include "experiments/sweep_results.h"
 #include "experiments/sweep_runner.h"
 
@@ -150,6 +151,44 @@ methods:
   int lines = 0;
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, 5);
+}
+
+TEST(SweepRunner, SavedOutputCloudsCarryTheDistanceToTheCleanSurface) {
+  const std::string config_path = WriteConfig("clouds", R"(name: clouds
+ground_truth_samples: 2000
+save_clouds: true
+datasets:
+  - shape: sphere:radius=0.5
+    points: 300
+noise:
+  - sigma: 0.01
+methods:
+  - method: none
+  - method: lpd
+    k: 8
+    max_iters: 1
+)");
+  const std::string directory = ::testing::TempDir() + "/clouds_results";
+  std::filesystem::remove_all(directory);
+  SweepRunOptions options;
+  options.results_directory = directory;
+  ASSERT_EQ(RunSweep(LoadSweepConfig(config_path), options).num_failed, 0);
+  int outputs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(directory + "/clouds")) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() < 11 || name.substr(name.size() - 11) != "_output.ply") continue;
+    ++outputs;
+    const PointCloud cloud = ReadPointCloud(entry.path().string());
+    ASSERT_EQ(cloud.scalars.size(), 1u) << name;
+    ASSERT_EQ(cloud.scalars[0].first, "distance");
+    ASSERT_EQ(cloud.scalars[0].second.size(), cloud.points.size());
+    for (size_t i = 0; i < cloud.points.size(); ++i) {
+      // The sphere's distance in closed form; the PLY stores floats.
+      EXPECT_NEAR(cloud.scalars[0].second[i], std::abs(cloud.points[i].norm() - 0.5), 1e-6)
+          << name << " point " << i;
+    }
+  }
+  EXPECT_EQ(outputs, 2);
 }
 
 }  // namespace
