@@ -120,6 +120,22 @@ TEST(SweepResults, RecordsRoundTripThroughJson) {
   EXPECT_EQ(back.ToJson(), record.ToJson());
 }
 
+// The methods of the runner tests: the input as is, and one lpd iteration.
+const char* kNoneAndOneLpdIteration = R"(methods:
+  - method: none
+  - method: lpd
+    k: 8
+    max_iters: 1
+)";
+
+// Run options writing to TempDir()/name, emptied first.
+SweepRunOptions EmptyResultsDirectory(const std::string& name) {
+  SweepRunOptions options;
+  options.results_directory = ::testing::TempDir() + "/" + name;
+  std::filesystem::remove_all(options.results_directory);
+  return options;
+}
+
 TEST(SweepRunner, ARerunSkipsFinishedCellsAndKeepsTheRows) {
   const std::string config_path = WriteConfig("resume", R"(name: resume
 ground_truth_samples: 5000
@@ -128,16 +144,8 @@ datasets:
     points: 400
 noise:
   - sigma: [0.005, 0.01]
-methods:
-  - method: none
-  - method: lpd
-    k: 8
-    max_iters: 1
-)");
-  const std::string directory = ::testing::TempDir() + "/resume_results";
-  std::filesystem::remove_all(directory);
-  SweepRunOptions options;
-  options.results_directory = directory;
+)" + std::string(kNoneAndOneLpdIteration));
+  const SweepRunOptions options = EmptyResultsDirectory("resume_results");
   const SweepConfig config = LoadSweepConfig(config_path);
   const SweepRunSummary first = RunSweep(config, options);
   EXPECT_EQ(first.num_cells, 4);
@@ -162,19 +170,12 @@ datasets:
     points: 300
 noise:
   - sigma: 0.01
-methods:
-  - method: none
-  - method: lpd
-    k: 8
-    max_iters: 1
-)");
-  const std::string directory = ::testing::TempDir() + "/clouds_results";
-  std::filesystem::remove_all(directory);
-  SweepRunOptions options;
-  options.results_directory = directory;
+)" + std::string(kNoneAndOneLpdIteration));
+  const SweepRunOptions options = EmptyResultsDirectory("clouds_results");
   ASSERT_EQ(RunSweep(LoadSweepConfig(config_path), options).num_failed, 0);
   int outputs = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(directory + "/clouds")) {
+  const std::string clouds = options.results_directory + "/clouds";
+  for (const auto& entry : std::filesystem::directory_iterator(clouds)) {
     const std::string name = entry.path().filename().string();
     if (name.size() < 11 || name.substr(name.size() - 11) != "_output.ply") continue;
     ++outputs;
