@@ -210,6 +210,16 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
       state.order.size(), cloud.points.size(), result.num_outliers, result.num_removed,
       result.num_features, result.summary.num_iterations, result.total_seconds,
       result.setup_seconds);
+  std::string chosen;
+  if (state.neighborhood.spacing > 0.0) {
+    char text[160];
+    std::snprintf(text, sizeof(text), " (from noise %.3g and spacing %.3g of the diagonal)",
+                  state.neighborhood.noise_sigma, state.neighborhood.spacing);
+    chosen = text;
+  }
+  std::printf("k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", state.problem.k(),
+              chosen.c_str(), result.summary.eta, result.summary.lambda, result.summary.mu_l,
+              options.minimizer.energy.mu_m);
   if (options.final_step.snap_features) {
     std::printf("feature points snapped: %d onto edges, %d at corners, %d left on their plane\n",
                 result.snapping.snapped_to_edge, result.snapping.snapped_at_corner,

@@ -4,15 +4,37 @@
 #include <thread>
 
 #include "experiments/denoise_parameters.h"
+#include "solvers/presets.h"
 
+DEFINE_string(preset, "default",
+              "default (k, eta, lambda, mu_l from the data; run to convergence; sphere "
+              "projection) or paper (the paper's literal Table 2 setting: k = 20, lambda = 1, "
+              "eta = 5000, mu_l = 5e-9, 5 iterations, plane projection); flags given with it "
+              "override its values");
 // ---- neighbourhoods and energy (Eq. 5, Table 2) ----
-DEFINE_int32(k, 20, "number of nearest neighbours |N(i)| (paper: 20; 50-150 for heavy noise)");
+DEFINE_string(k, "auto",
+              "number of nearest neighbours |N(i)| (paper: 20; 50-150 for heavy noise), or "
+              "auto: the points within k_radius_sigmas noise deviations, from the noise and "
+              "point spacing estimated on the input, within [12, max_k]");
+DEFINE_double(k_radius_sigmas, 4.2,
+              "with --k=auto, k = pi (this x noise sigma / point spacing)^2: the neighbourhood "
+              "radius in estimated noise deviations");
+DEFINE_int32(max_k, 150, "with --k=auto, the largest k chosen");
 DEFINE_double(lambda, 1.0, "weight of the piecewise-smoothness term (paper: 1-2)");
 DEFINE_double(eta, 5000.0, "weight of the stitching term |h_i - t_i|^2 (paper: 5000)");
 DEFINE_double(mu_l, 5e-9,
               "selectivity of the fitting line processes, a squared distance in the frame "
               "normalized to bounding-box diagonal 1 (paper: 5e-9)");
-DEFINE_double(mu_m, 0.13, "selectivity of the smoothness line processes (paper: 0.13)");
+DEFINE_double(mu_m, 0.06030737921409157,
+              "selectivity of the smoothness line processes (1 - cos 20deg; paper: 0.13)");
+DEFINE_double(fit_balance, 0.5,
+              "sets eta = this x (k + 1) x median alpha_i: the stitching weight against the "
+              "fitting term's (1: a tilt of h_i away from its data costs as much as one away "
+              "from t_i); 0 keeps --eta");
+DEFINE_double(smoothing_balance, 4.0,
+              "sets lambda so that the smoothness share of the T system's diagonal is this "
+              "many times the stitching share (median over the points; about the squared "
+              "smoothing radius in neighbour hops); 0 keeps --lambda");
 DEFINE_double(mu_m_deg, 0.0,
               "if > 0, sets mu_m = 1 - cos(angle) from an angle in degrees (30 gives 0.134); "
               "cannot be combined with --mu_m");
@@ -27,19 +49,19 @@ DEFINE_string(initialization, "auto",
               "alternating, plane_fit for ceres)");
 DEFINE_int32(initialization_seed, 1, "random seed of --initialization=random");
 // ---- schedule (Alg. 1) ----
-DEFINE_int32(max_iters, 5,
-             "maximum outer iterations of Alg. 1 (reference implementation: 5; more "
-             "iterations keep lowering the energy but over-smooth, see README)");
+DEFINE_int32(max_iters, 50,
+             "maximum outer iterations of Alg. 1 (paper preset: 5, as the reference "
+             "implementation; the default converges well before 50)");
 DEFINE_int32(inner_iters, 2, "(T, M, S) passes per outer iteration (paper: 2)");
-DEFINE_double(energy_tolerance, 0.01,
+DEFINE_double(energy_tolerance, 1e-3,
               "stop when the energy changes by less than this fraction over three "
               "iterations (paper: 0.01); 0 runs all iterations");
 DEFINE_bool(optimize_orientations, true,
             "update the orientations s_ij (Eq. 8); false holds them at 1 (ablation of Fig. 4)");
-DEFINE_double(mu_l_noise_sigmas, 0.0,
+DEFINE_double(mu_l_noise_sigmas, 4.0,
               "if > 0, replaces --mu_l by (c sigma)^2 with c this value and sigma = 1.4826 "
-              "median |h_i.q_j| after the first local fit (a robust noise estimate); 3 is a "
-              "good start");
+              "median |h_i.q_j| after the first local fit (a robust noise estimate); 0 keeps "
+              "--mu_l");
 // ---- graduated non-convexity ----
 DEFINE_string(gnc, "none",
               "continue mu_l, mu_m or both from a convex start down to their targets (none, "
@@ -68,6 +90,9 @@ DEFINE_string(ceres_orientations, "blocks",
 DEFINE_int32(threads, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
              "worker threads (default: all cores)");
 // ---- final denoising (Sec. 3.4) ----
+DEFINE_string(projection, "sphere",
+              "final projection of each point: plane (onto t_i, Sec. 3.4) or sphere (onto the "
+              "algebraic sphere fitted to its neighbours' planes, weighted by m_ij)");
 DEFINE_double(outlier_threshold, 0.5, "l_ij below this counts as an outlier vote");
 DEFINE_double(outlier_fraction, 0.9, "share of outlier votes in N(i) that makes i an outlier");
 DEFINE_double(feature_threshold, 0.5, "m_ij below this counts as a feature vote");
@@ -91,7 +116,11 @@ bool FlagGiven(const char* name) { return !gflags::GetCommandLineFlagInfoOrDie(n
 
 solvers::DenoiseOptions DenoiseOptionsFromFlags(
     const std::vector<std::pair<std::string, std::string>>* saved) {
-  solvers::DenoiseOptions options;
+  solvers::Preset preset;
+  if (!solvers::ParsePreset(FLAGS_preset, &preset)) {
+    throw std::invalid_argument("--preset must be default or paper, got '" + FLAGS_preset + "'");
+  }
+  solvers::DenoiseOptions options = solvers::PresetOptions(preset);
   if (!solvers::ParseSolver(FLAGS_solver, &options.solver)) {
     throw std::invalid_argument("--solver must be alternating or ceres, got '" + FLAGS_solver +
                                 "'");
@@ -104,7 +133,7 @@ solvers::DenoiseOptions DenoiseOptionsFromFlags(
     if (!flag.is_default && !DenoiseParameterApplies(name, options.solver)) {
       throw std::invalid_argument("--" + name + " has no effect with --solver=" + FLAGS_solver);
     }
-    if (!saved || !flag.is_default) SetDenoiseParameter(name, flag.current_value, &options);
+    if (!flag.is_default) SetDenoiseParameter(name, flag.current_value, &options);
   }
   if (FlagGiven("mu_m_deg")) {
     if (FlagGiven("mu_m")) {

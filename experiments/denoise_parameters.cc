@@ -82,17 +82,46 @@ Parameter EnumChoice(std::string name, Scope scope, std::function<Enum&(DenoiseO
   return Choice(std::move(name), scope, std::move(get), std::move(set));
 }
 
+double ParseNumber(const std::string& name, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value)) {
+    throw std::invalid_argument("parameter " + name + ": '" + text + "' is not a number");
+  }
+  return value;
+}
+
+int ParseInteger(const std::string& name, const std::string& text) {
+  const double value = ParseNumber(name, text);
+  if (value != std::floor(value) || std::abs(value) > 1e9) {
+    throw std::invalid_argument("parameter " + name + ": '" + text + "' is not an integer");
+  }
+  return static_cast<int>(value);
+}
+
 const std::vector<Parameter>& Parameters() {
   using O = DenoiseOptions;
   constexpr Scope kBoth = Scope::kBoth;
   constexpr Scope kAlternating = Scope::kAlternating;
   constexpr Scope kCeres = Scope::kCeres;
   static const std::vector<Parameter> parameters = {
-      Integer("k", kBoth, [](O& o) -> int& { return o.problem.k; }),
+      Choice(
+          "k", kBoth,
+          [](const O& o) { return o.choose_k ? std::string("auto") : std::to_string(o.problem.k); },
+          [](const std::string& text, O& o) {
+            o.choose_k = text == "auto";
+            if (!o.choose_k) o.problem.k = ParseInteger("k", text);
+          }),
+      Number("k_radius_sigmas", kBoth,
+             [](O& o) -> double& { return o.neighborhood.radius_in_sigmas; }),
+      Integer("max_k", kBoth, [](O& o) -> int& { return o.neighborhood.max_k; }),
       Number("lambda", kBoth, [](O& o) -> double& { return o.minimizer.energy.lambda; }),
       Number("eta", kBoth, [](O& o) -> double& { return o.minimizer.energy.eta; }),
       Number("mu_l", kBoth, [](O& o) -> double& { return o.minimizer.energy.mu_l; }),
       Number("mu_m", kBoth, [](O& o) -> double& { return o.minimizer.energy.mu_m; }),
+      Number("fit_balance", kBoth, [](O& o) -> double& { return o.weights.fit_balance; }),
+      Number("smoothing_balance", kBoth,
+             [](O& o) -> double& { return o.weights.smoothing_balance; }),
       Choice(
           "initialization", kBoth,
           [](const O& o) { return solvers::InitializationName(o.EffectiveInitialization()); },
@@ -116,7 +145,7 @@ const std::vector<Parameter>& Parameters() {
              [](O& o) -> double& { return o.minimizer.energy_tolerance; }),
       Flag("optimize_orientations", kAlternating,
            [](O& o) -> bool& { return o.minimizer.optimize_orientations; }),
-      Number("mu_l_noise_sigmas", kAlternating,
+      Number("mu_l_noise_sigmas", kBoth,
              [](O& o) -> double& { return o.minimizer.mu_l_noise_sigmas; }),
       EnumChoice<solvers::GncTarget>(
           "gnc", kAlternating, [](O& o) -> solvers::GncTarget& { return o.minimizer.gnc.target; },
@@ -158,6 +187,10 @@ const std::vector<Parameter>& Parameters() {
       Number("ceres_parameter_tolerance", kCeres,
              [](O& o) -> double& { return o.joint.parameter_tolerance; }),
       Number("ceres_max_seconds", kCeres, [](O& o) -> double& { return o.joint.max_seconds; }),
+      EnumChoice<solvers::Projection>(
+          "projection", kBoth,
+          [](O& o) -> solvers::Projection& { return o.final_step.projection; },
+          solvers::ProjectionName, solvers::ParseProjection, "plane, sphere"),
       Number("outlier_threshold", kBoth,
              [](O& o) -> double& { return o.final_step.outlier_line_threshold; }),
       Number("outlier_fraction", kBoth,
@@ -183,15 +216,6 @@ const Parameter& Find(const std::string& name) {
     if (parameter.name == name) return parameter;
   }
   throw std::invalid_argument("unknown parameter '" + name + "'");
-}
-
-double ParseNumber(const std::string& name, const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(value)) {
-    throw std::invalid_argument("parameter " + name + ": '" + text + "' is not a number");
-  }
-  return value;
 }
 
 // The shortest of 15 or 17 significant digits that reads back as exactly `value` (a saved
@@ -250,13 +274,15 @@ void SetDenoiseParameter(const std::string& name, const std::string& text,
     }
     return;
   }
-  const double value = ParseNumber(name, text);
   if (parameter.number) {
-    parameter.number(*options) = value;
-  } else if (value != std::floor(value) || std::abs(value) > 1e9) {
-    throw std::invalid_argument("parameter " + name + ": '" + text + "' is not an integer");
+    parameter.number(*options) = ParseNumber(name, text);
+    // A weight given outright replaces the rule that would derive it from the data; a
+    // later rule parameter (they come after the weights) switches the rule back on.
+    if (name == "eta") options->weights.fit_balance = 0.0;
+    if (name == "lambda") options->weights.smoothing_balance = 0.0;
+    if (name == "mu_l") options->minimizer.mu_l_noise_sigmas = 0.0;
   } else {
-    parameter.integer(*options) = static_cast<int>(value);
+    parameter.integer(*options) = ParseInteger(name, text);
   }
 }
 

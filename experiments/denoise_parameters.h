@@ -22,6 +22,8 @@ bool DenoiseParameterApplies(const std::string& name, solvers::Solver solver);
 // parameter if it is unknown or `text` is not a valid value of its type (int, number, bool,
 // or one of a parameter's named choices).
 // "mu_m_deg" sets mu_m = 1 - cos(angle) (the reference implementation's angle form).
+// "eta", "lambda" and "mu_l" also switch off the data rule for that weight (fit_balance,
+// smoothing_balance, mu_l_noise_sigmas = 0), so a weight given outright is the one used.
 void SetDenoiseParameter(const std::string& name, const std::string& text,
                          solvers::DenoiseOptions* options);
 

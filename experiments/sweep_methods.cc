@@ -7,6 +7,7 @@
 
 #include "experiments/cgal_baselines.h"
 #include "experiments/denoise_parameters.h"
+#include "solvers/presets.h"
 #include "experiments/method_parameters.h"
 #include "solvers/denoise_point_set.h"
 
@@ -26,10 +27,18 @@ bool DenoiseSolver(const std::string& method, solvers::Solver* solver) {
 }
 
 solvers::DenoiseOptions DenoiseOptionsOf(const MethodConfig& method, solvers::Solver solver) {
-  solvers::DenoiseOptions options;
+  solvers::Preset preset = solvers::Preset::kDefault;
+  for (const auto& [name, value] : method.parameters) {
+    if (name == "preset" && !solvers::ParsePreset(value.text, &preset)) {
+      throw std::invalid_argument("preset of method " + method.method +
+                                  " must be default or paper, got '" + value.text + "'");
+    }
+  }
+  solvers::DenoiseOptions options = solvers::PresetOptions(preset);
   options.solver = solver;
   const std::vector<std::string>& known = DenoiseParameterNames();
   for (const auto& [name, value] : method.parameters) {
+    if (name == "preset") continue;
     if (name != "mu_m_deg" && std::find(known.begin(), known.end(), name) == known.end()) {
       throw std::invalid_argument("unknown parameter '" + name + "' of method " + method.method);
     }

@@ -192,6 +192,8 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
     summary.message = "reached max_iters before graduated non-convexity reached its targets";
   }
   summary.mu_l = parameters.mu_l;
+  summary.eta = parameters.eta;
+  summary.lambda = parameters.lambda;
   summary.total_seconds = SecondsSince(run_start);
   return summary;
 }

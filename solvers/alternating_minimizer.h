@@ -49,19 +49,21 @@ class AlternatingMinimizer {
 
     // ---- schedule (Alg. 1) ----
     // Outer iterations at most (maxIter of Alg. 1; the reference implementation runs 5).
-    int max_iterations = 5;
+    int max_iterations = 50;
     // (T, M, S) passes per outer iteration (Alg. 1 line 13: 2).
     int inner_iterations = 2;
     // Stop when |E_t - E_{t-w}| <= energy_tolerance |E_{t-w}|, w = energy_window (Sec. 3.3:
-    // "does not change by more than 1% over three iterations"). 0 disables the test.
-    double energy_tolerance = 0.01;
+    // "does not change by more than 1% over three iterations", 0.01; the default is tighter
+    // because with data-scaled weights the run converges instead of drifting). 0 disables
+    // the test.
+    double energy_tolerance = 1e-3;
     int energy_window = 3;
     // Alg. 1 line 16 (Eq. 8); false holds every s_ij at 1, the ablation of Fig. 4.
     bool optimize_orientations = true;
     // When > 0, mu_l = (c sigma)^2 with c = mu_l_noise_sigmas and sigma the robust residual
     // scale (residual_statistics.h) after the first local step, replacing energy.mu_l. With
     // c = 3, a residual of one sigma keeps l = 0.81 and one of three sigma l = 0.25 (Eq. 6).
-    double mu_l_noise_sigmas = 0.0;
+    double mu_l_noise_sigmas = 4.0;
     // Continuation of mu_l and/or mu_m toward their targets; its stages come before, and
     // count toward, max_iterations. The convergence test only looks at iterations run at the
     // targets, and energies are always those of Eq. (5) at the targets.

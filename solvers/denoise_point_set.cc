@@ -1,12 +1,16 @@
 #include "solvers/denoise_point_set.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
 #include "energy/spatial_order.h"
 #include "solvers/parse_by_name.h"
+#include "solvers/residual_statistics.h"
+#include "solvers/sphere_projection.h"
 
 namespace lpd::solvers {
 namespace {
@@ -44,7 +48,10 @@ Initialization DenoiseOptions::EffectiveInitialization() const {
 }
 
 bool DenoiseOptions::IsValid(std::string* error) const {
-  if (!problem.IsValid(error) || !minimizer.IsValid(error) || !final_step.IsValid(error)) {
+  if (choose_k && !neighborhood.IsValid(error)) return false;
+  if (!choose_k && !problem.IsValid(error)) return false;
+  if (!weights.IsValid(error) || !minimizer.IsValid(error) ||
+      !final_step.IsValid(error)) {
     return false;
   }
   if (solver == Solver::kCeres) {
@@ -71,8 +78,14 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
   DenoiseState state;
   state.order = energy::MortonOrder(points);
   const int threads = options.minimizer.num_threads;
-  state.problem = energy::BuildProblem(ToProblemOrder(points, state.order), options.problem,
-                                       threads);
+  const energy::PointList ordered_points = ToProblemOrder(points, state.order);
+  energy::ProblemOptions problem_options = options.problem;
+  if (options.choose_k) {
+    state.neighborhood = ChooseNeighborhoodSize(ordered_points, options.neighborhood, threads);
+    problem_options.k = state.neighborhood.k;
+  }
+  state.problem = energy::BuildProblem(ordered_points, problem_options, threads);
+  state.neighborhood.k = state.problem.k();
   state.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   energy::PointList ordered_normals;
   if (normals) ordered_normals = ToProblemOrder(*normals, state.order);
@@ -87,16 +100,26 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
                                 const IterationCallback& callback) {
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  AlternatingMinimizer::Options minimizer = options.minimizer;
+  minimizer.energy =
+      energy::ScaleWeightsToData(state->problem, options.minimizer.energy, options.weights);
   SolverSummary summary;
   if (options.solver == Solver::kCeres) {
     CeresJointSolver::Options joint = options.joint;
-    joint.num_threads = options.minimizer.num_threads;
-    summary = CeresJointSolver::Minimize(state->problem, options.minimizer.energy, joint,
+    joint.num_threads = minimizer.num_threads;
+    if (minimizer.mu_l_noise_sigmas > 0.0) {  // the joint solve starts from fitted planes
+      const double scale = minimizer.mu_l_noise_sigmas *
+                           RobustFittingResidualScale(state->problem, state->variables);
+      minimizer.energy.mu_l = std::max(scale * scale, std::numeric_limits<double>::min());
+    }
+    summary = CeresJointSolver::Minimize(state->problem, minimizer.energy, joint,
                                          &state->variables, callback);
-    summary.mu_l = options.minimizer.energy.mu_l;
+    summary.mu_l = minimizer.energy.mu_l;
+    summary.eta = minimizer.energy.eta;
+    summary.lambda = minimizer.energy.lambda;
   } else {
-    summary = AlternatingMinimizer::Minimize(state->problem, options.minimizer,
-                                             &state->variables, callback, &state->progress);
+    summary = AlternatingMinimizer::Minimize(state->problem, minimizer, &state->variables,
+                                             callback, &state->progress);
   }
   if (!summary.IsSolutionUsable()) {
     throw std::runtime_error("minimization failed: " + summary.message);
@@ -111,8 +134,14 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   DenoiseResult result;
   result.summary = std::move(summary);
   result.setup_seconds = state.setup_seconds;
-  ProjectOntoTangentPlanes(problem, state.variables, &result.projected, &result.normals);
-  result.indicators = ComputeIndicators(problem, state.variables, options.final_step);
+  if (options.final_step.projection == Projection::kSphere) {
+    ProjectOntoLocalSpheres(problem, state.variables, options.minimizer.num_threads,
+                            &result.projected, &result.normals);
+  } else {
+    ProjectOntoTangentPlanes(problem, state.variables, &result.projected, &result.normals);
+  }
+  result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
+                                         options.final_step);
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
                                         options.final_step.snapping, &result.projected);

@@ -12,11 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "energy/data_scaled_weights.h"
 #include "energy/normalization.h"
 #include "energy/problem.h"
 #include "solvers/alternating_minimizer.h"
 #include "solvers/ceres_joint_solver.h"
 #include "solvers/final_denoising.h"
+#include "solvers/neighborhood_size.h"
 #include "solvers/initial_state.h"
 #include "solvers/solver_summary.h"
 
@@ -31,9 +33,15 @@ bool ParseSolver(const std::string& name, Solver* solver);
 
 struct DenoiseOptions {
   energy::ProblemOptions problem;            // k and the duplicate-point guard
+  // When set, problem.k is replaced by the k chosen from the data (neighborhood_size.h).
+  bool choose_k = true;
+  NeighborhoodSizeOptions neighborhood;
   // Energy weights, Alg. 1's schedule and the thread count of every stage (the joint solve's
   // own num_threads is replaced by minimizer.num_threads).
   AlternatingMinimizer::Options minimizer;
+  // eta and lambda from the data (fit and smoothing balance); replaces minimizer.energy's
+  // eta and lambda for both solvers unless a balance is 0.
+  energy::DataScaledWeights weights;
   Solver solver = Solver::kAlternating;
   CeresJointSolver::Options joint;           // used when solver == kCeres
   // The start of the minimization; unset means kZero for Alg. 1 (as the paper does) and
@@ -71,6 +79,8 @@ struct DenoiseState {
   energy::Problem problem;
   energy::Variables variables;
   MinimizerProgress progress;
+  // The noise and spacing estimates behind k when it was chosen from the data (else k only).
+  NeighborhoodSize neighborhood;
   double setup_seconds = 0.0;  // normalization and k-NN graph
 };
 

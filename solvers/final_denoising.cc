@@ -3,6 +3,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "energy/geman_mcclure.h"
+#include "solvers/parse_by_name.h"
+
 namespace lpd::solvers {
 namespace {
 
@@ -12,6 +15,15 @@ constexpr double kMinNormalSquaredNorm = 1e-24;
 bool InUnitInterval(double x) { return x > 0.0 && x <= 1.0; }
 
 }  // namespace
+
+const char* ProjectionName(Projection projection) {
+  return projection == Projection::kPlane ? "plane" : "sphere";
+}
+
+bool ParseProjection(const std::string& name, Projection* projection) {
+  constexpr Projection kProjections[] = {Projection::kPlane, Projection::kSphere};
+  return ParseByName(name, kProjections, ProjectionName, projection);
+}
 
 bool FinalDenoisingOptions::IsValid(std::string* error) const {
   std::ostringstream out;
@@ -33,7 +45,7 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
 }
 
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
-                                  const FinalDenoisingOptions& options) {
+                                  double mu_l, const FinalDenoisingOptions& options) {
   const int n = problem.num_points();
   const int k = problem.k();
   const auto& graph = problem.graph;
@@ -42,18 +54,19 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
   indicators.feature_score.resize(n);
   indicators.is_outlier.resize(n);
   indicators.is_feature.resize(n);
-  // Outlier votes: every line process in which q_i is the data point, l_ii and l_ji for
-  // each j with i in N(j) (Sec. 4.3: the points "too unfit to serve for local fitting").
-  std::vector<int> votes(n, 0), voters(n, 0);
-  for (int j = 0; j < n; ++j) {
+  const energy::GemanMcClure penalty(mu_l);
+  // Outlier votes: the fitting line process each plane h_j, j in N(i) u {i}, gives q_i.
+  std::vector<int> votes(n, 0);
+  for (int i = 0; i < n; ++i) {
+    const energy::Point3& p = problem.points[i];
     for (int a = 0; a <= k; ++a) {
-      const int i = graph.FittingPoint(j, a);
-      votes[i] += v.l(j, a) < options.outlier_line_threshold;
-      ++voters[i];
+      const int j = graph.FittingPoint(i, a);
+      const double residual = v.h.row(j).head<3>().dot(p.transpose()) + v.h(j, 3);
+      votes[i] += penalty.OptimalLineProcess(residual * residual) < options.outlier_line_threshold;
     }
   }
   for (int i = 0; i < n; ++i) {
-    indicators.outlier_score[i] = static_cast<double>(votes[i]) / voters[i];
+    indicators.outlier_score[i] = static_cast<double>(votes[i]) / (k + 1);
     indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
 
     const int begin = graph.incident_offsets[i];

@@ -1,12 +1,17 @@
 // lpd: the final denoising of Sec. 3.4: indicators, projection onto t_i, outlier removal.
 //
-//   outlier score of i = fraction of the line processes with q_i as data point (l_ii, and
-//                        l_ji for every j with i in N(j)) below outlier_line_threshold;
-//                        i is an outlier if the score >= outlier_fraction (paper: 90%, 0.5).
-//                        Sec. 3.4 speaks of "l_ij, j in N(i)"; read as l_ij scored on i's
-//                        own plane h_i, an isolated outlier whose plane follows the nearby
-//                        surface is never flagged, so we use the reading of Sec. 4.3 and
-//                        Fig. 6: the points the neighbouring fits reject.
+//   outlier score of i = fraction of the planes of i and of its neighbours, h_j for j in
+//                        N(i) u {i}, whose fitting line process for q_i, (mu_l / (mu_l +
+//                        (h_j^T q_i)^2))^2 (Eq. 6), is below outlier_line_threshold; i is an
+//                        outlier if the score >= outlier_fraction (paper: 90%, 0.5). For
+//                        j = i and for every j with i in N(j) this is the l_ji of Eq. (5).
+//                        Sec. 3.4 speaks of "l_ij, j in N(i)", i's own plane judging its
+//                        neighbours, which never flags an isolated outlier whose plane follows
+//                        the nearby surface; the points that j's fit would reject (Sec. 4.3,
+//                        Fig. 6) do flag it. We ask every neighbour j, not only those with i in
+//                        N(j): an outlier off the surface is rarely among its neighbours'
+//                        nearest, so those alone are too few votes (measured on a box with 5%
+//                        uniform outliers: recall 0.20 with them, see docs/method.md).
 //   feature score of i = fraction of pairs (i, j) in M with m_ij < feature_line_threshold;
 //                        i is near a feature if the score > feature_fraction (paper: 70%, 0.5)
 //   p_i' = p_i - n_i (t_i^T q_i) / |n_i|^2,  n_i = first three coordinates of t_i
@@ -23,7 +28,14 @@
 
 namespace lpd::solvers {
 
+// Where each point goes: onto its plane t_i (Sec. 3.4) or onto the local algebraic sphere
+// fitted to its neighbours' planes (sphere_projection.h).
+enum class Projection { kPlane, kSphere };
+const char* ProjectionName(Projection projection);  // "plane", "sphere"
+bool ParseProjection(const std::string& name, Projection* projection);
+
 struct FinalDenoisingOptions {
+  Projection projection = Projection::kSphere;
   double outlier_line_threshold = 0.5;   // l_ij below this votes "outlier"
   double outlier_fraction = 0.9;         // share of votes that makes an outlier, in (0, 1]
   double feature_line_threshold = 0.5;   // m_ij below this votes "feature"
@@ -46,8 +58,9 @@ struct PointIndicators {
   std::vector<uint8_t> is_feature;
 };
 
+// `mu_l`: the selectivity the fitting line processes were computed with.
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
-                                  const FinalDenoisingOptions& options);
+                                  double mu_l, const FinalDenoisingOptions& options);
 
 // p_i projected onto the plane t_i, in the input frame, and the unit normal n_i / |n_i|.
 // Where |n_i| vanishes (no plane was found) p_i is kept and the normal is zero.

@@ -61,6 +61,9 @@ struct SolverSummary {
   int num_iterations = 0;
   // The target mu_l the energies are evaluated with (the scale-aware one if it was chosen).
   double mu_l = NAN;
+  // The eta and lambda used (given, or derived from the data: energy/data_scaled_weights.h).
+  double eta = NAN;
+  double lambda = NAN;
   std::vector<StepRecord> steps;
   std::vector<IterationRecord> iterations;
   double total_seconds = 0.0;

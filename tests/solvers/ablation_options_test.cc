@@ -7,14 +7,16 @@
 #include "experiments/noise.h"
 #include "experiments/shape_catalog.h"
 #include "solvers/denoise_point_set.h"
+#include "solvers/presets.h"
 #include "solvers/residual_statistics.h"
 #include "test_problems.h"
 
 namespace lpd::solvers {
 namespace {
 
+// The paper's setting, which these ablations vary one option of.
 DenoiseOptions BaseOptions() {
-  DenoiseOptions options;
+  DenoiseOptions options = PresetOptions(Preset::kPaper);
   options.minimizer.num_threads = 2;
   return options;
 }

@@ -29,6 +29,7 @@ energy::Problem PlaneProblem(int n, double sigma, uint64_t seed, int k) {
 AlternatingMinimizer::Options TightOptions(const energy::EnergyParameters& parameters) {
   AlternatingMinimizer::Options options;
   options.energy = parameters;
+  options.mu_l_noise_sigmas = 0.0;  // one energy throughout: mu_l stays the given one
   options.max_iterations = 6;
   options.energy_tolerance = 0.0;
   options.linear_solver.relative_tolerance = 1e-12;

@@ -2,6 +2,7 @@
 // keeps h_i on the sphere and lowers the energy, and on a noisy cube it is compared with the
 // alternating driver of Alg. 1 from the same start.
 #include "solvers/ceres_joint_solver.h"
+#include "solvers/presets.h"
 
 #include <cmath>
 
@@ -50,7 +51,7 @@ TEST(CeresJointSolver, ObjectiveIsTheEnergyWithOptimalLineProcesses) {
   energy::ProblemOptions options;
   options.k = 6;
   const energy::Problem problem = energy::BuildProblem(testing::NoisySphere(200, 0.05, 3), options);
-  energy::EnergyParameters paper;  // the paper's weights, with mu_l far below the residuals
+  energy::EnergyParameters paper = PresetOptions(Preset::kPaper).minimizer.energy;  // mu_l far below the residuals
   for (const energy::EnergyParameters& w : {testing::BalancedParameters(), paper}) {
     for (uint64_t seed = 1; seed <= 5; ++seed) {
       energy::Variables v = testing::RandomVariables(problem, seed);
@@ -123,11 +124,11 @@ TEST(CeresJointSolver, NoisyCubeAgainstTheAlternatingDriver) {
   energy::ProblemOptions options;
   options.k = 10;
   const energy::Problem problem = energy::BuildProblem(input, options, 2);
-  const energy::EnergyParameters w;  // the paper's
+  const energy::EnergyParameters w = PresetOptions(Preset::kPaper).minimizer.energy;
   const energy::Variables start = InitialState(problem, w, Initialization::kPlaneFit, 2);
 
   energy::Variables alternating = start;
-  AlternatingMinimizer::Options schedule;
+  AlternatingMinimizer::Options schedule = PresetOptions(Preset::kPaper).minimizer;
   schedule.num_threads = 2;
   const SolverSummary alternating_summary =
       AlternatingMinimizer::Minimize(problem, schedule, &alternating);

@@ -9,6 +9,7 @@
 #include "experiments/noise.h"
 #include "experiments/shape_catalog.h"
 #include "solvers/denoise_point_set.h"
+#include "solvers/presets.h"
 
 namespace lpd::solvers {
 namespace {
@@ -87,7 +88,7 @@ TEST(FeatureSnapping, MovesDenoisedFeaturePointsOfANoisyCubeCloserToItsEdgesAndS
   noise.sigma = 0.005;
   noise.seed = 4;
   const energy::PointList input = experiments::ApplyNoise(clean.points, clean.normals, noise).points;
-  DenoiseOptions options;
+  DenoiseOptions options = PresetOptions(Preset::kPaper);
   options.minimizer.num_threads = 2;
   options.final_step.remove_outliers = false;
   const DenoiseResult plain = DenoisePointSet(input, options);

@@ -1,0 +1,47 @@
+// lpd: k chosen from the data: from a noise estimate and the sampling density.
+//
+// The neighbourhood is made a fixed multiple of the noise wide: its radius r = c sigma, with
+// c = radius_in_sigmas, holds k = pi r^2 / spacing^2 points, so
+//   k = pi (radius_in_sigmas sigma / spacing)^2,
+// clamped to [min_k, max_k]. The same cloud sampled 4x denser gets 4x the k and the same
+// neighbourhoods. c = 4.2 was read off the best k of the four inputs with a clean mesh
+// (FANDISK and JOINT at two noise levels: best k 16-24, 54, 36-54, >= 80; docs/method.md).
+// sigma and the spacing come from a probe: the k-NN graph and PCA planes at probe_k
+// neighbours. sigma is the normalized median absolute fitting residual
+// (residual_statistics.h) corrected for the three degrees of freedom a fitted plane absorbs,
+// sqrt((probe_k + 1) / (probe_k - 2)); the spacing is sqrt(2 pi median alpha_i / probe_k)
+// (alpha_i, the mean squared distance to the probe_k nearest neighbours, is probe_k spacing^2
+// / (2 pi) for a uniform disk).
+#ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
+#define LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
+
+#include <string>
+
+#include "energy/normalization.h"
+
+namespace lpd::solvers {
+
+struct NeighborhoodSizeOptions {
+  int probe_k = 40;
+  double radius_in_sigmas = 4.2;
+  int min_k = 12;
+  int max_k = 150;
+
+  bool IsValid(std::string* error) const;
+};
+
+struct NeighborhoodSize {
+  double noise_sigma = 0.0;  // in the normalized frame (bounding-box diagonal 1)
+  double spacing = 0.0;      // likewise
+  int k = 0;
+};
+
+// Throws std::invalid_argument (as energy::BuildProblem) when `points` has fewer than
+// probe_k + 1 points or no extent.
+NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
+                                        const NeighborhoodSizeOptions& options,
+                                        int num_threads);
+
+}  // namespace lpd::solvers
+
+#endif  // LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_

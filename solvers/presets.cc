@@ -1,0 +1,34 @@
+#include "solvers/presets.h"
+
+#include "solvers/parse_by_name.h"
+
+namespace lpd::solvers {
+
+const char* PresetName(Preset preset) { return preset == Preset::kPaper ? "paper" : "default"; }
+
+bool ParsePreset(const std::string& name, Preset* preset) {
+  constexpr Preset kPresets[] = {Preset::kDefault, Preset::kPaper};
+  return ParseByName(name, kPresets, PresetName, preset);
+}
+
+DenoiseOptions PresetOptions(Preset preset) {
+  DenoiseOptions options;
+  if (preset == Preset::kDefault) return options;
+  options.choose_k = false;
+  options.problem.k = 20;
+  options.weights.fit_balance = 0.0;
+  options.weights.smoothing_balance = 0.0;
+  options.minimizer.energy = energy::EnergyParameters();
+  options.minimizer.energy.lambda = 1.0;
+  options.minimizer.energy.eta = 5000.0;
+  options.minimizer.energy.mu_l = 5e-9;
+  options.minimizer.energy.mu_m = 0.13;
+  options.minimizer.mu_l_noise_sigmas = 0.0;
+  options.minimizer.max_iterations = 5;
+  options.minimizer.inner_iterations = 2;
+  options.minimizer.energy_tolerance = 0.01;
+  options.final_step.projection = Projection::kPlane;
+  return options;
+}
+
+}  // namespace lpd::solvers
