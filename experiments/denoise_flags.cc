@@ -93,8 +93,9 @@ DEFINE_int32(threads, static_cast<int>(std::max(1u, std::thread::hardware_concur
 DEFINE_string(projection, "sphere",
               "final projection of each point: plane (onto t_i, Sec. 3.4) or sphere (onto the "
               "algebraic sphere fitted to its neighbours' planes, weighted by m_ij)");
-DEFINE_double(outlier_threshold, 0.5, "l_ij below this counts as an outlier vote");
-DEFINE_double(outlier_fraction, 0.9, "share of outlier votes in N(i) that makes i an outlier");
+DEFINE_double(outlier_fraction, 0.65,
+              "outlier score (1 - the support-weighted fitting line processes the planes of "
+              "N(i) u {i} give q_i) at which i is an outlier (paper preset: 0.9)");
 DEFINE_double(feature_threshold, 0.5, "m_ij below this counts as a feature vote");
 DEFINE_double(feature_fraction, 0.7, "share of feature votes above which i is a feature point");
 DEFINE_bool(remove_outliers, true, "drop points flagged as outliers from the output");

@@ -191,8 +191,6 @@ const std::vector<Parameter>& Parameters() {
           "projection", kBoth,
           [](O& o) -> solvers::Projection& { return o.final_step.projection; },
           solvers::ProjectionName, solvers::ParseProjection, "plane, sphere"),
-      Number("outlier_threshold", kBoth,
-             [](O& o) -> double& { return o.final_step.outlier_line_threshold; }),
       Number("outlier_fraction", kBoth,
              [](O& o) -> double& { return o.final_step.outlier_fraction; }),
       Number("feature_threshold", kBoth,

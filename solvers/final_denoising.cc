@@ -27,9 +27,7 @@ bool ParseProjection(const std::string& name, Projection* projection) {
 
 bool FinalDenoisingOptions::IsValid(std::string* error) const {
   std::ostringstream out;
-  if (!InUnitInterval(outlier_line_threshold)) {
-    out << "outlier_threshold must be in (0, 1], got " << outlier_line_threshold;
-  } else if (!InUnitInterval(outlier_fraction)) {
+  if (!InUnitInterval(outlier_fraction)) {
     out << "outlier_fraction must be in (0, 1], got " << outlier_fraction;
   } else if (!InUnitInterval(feature_line_threshold)) {
     out << "feature_threshold must be in (0, 1], got " << feature_line_threshold;
@@ -55,18 +53,22 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
   indicators.is_outlier.resize(n);
   indicators.is_feature.resize(n);
   const energy::GemanMcClure penalty(mu_l);
-  // Outlier votes: the fitting line process each plane h_j, j in N(i) u {i}, gives q_i.
-  std::vector<int> votes(n, 0);
+  // How much of its own neighbourhood each plane h_j explains: the mean of l_ja over a.
+  std::vector<double> support(n);
+  for (int j = 0; j < n; ++j) support[j] = v.l.row(j).mean();
+  // Evidence that q_i lies on the surface: the line process each plane h_j, j in N(i) u {i},
+  // gives q_i (Eq. 6), weighted by that plane's support.
+  std::vector<double> evidence(n, 0.0);
   for (int i = 0; i < n; ++i) {
     const energy::Point3& p = problem.points[i];
     for (int a = 0; a <= k; ++a) {
       const int j = graph.FittingPoint(i, a);
       const double residual = v.h.row(j).head<3>().dot(p.transpose()) + v.h(j, 3);
-      votes[i] += penalty.OptimalLineProcess(residual * residual) < options.outlier_line_threshold;
+      evidence[i] += support[j] * penalty.OptimalLineProcess(residual * residual);
     }
   }
   for (int i = 0; i < n; ++i) {
-    indicators.outlier_score[i] = static_cast<double>(votes[i]) / (k + 1);
+    indicators.outlier_score[i] = 1.0 - evidence[i] / (k + 1);
     indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
 
     const int begin = graph.incident_offsets[i];
