@@ -97,7 +97,8 @@ DEFINE_double(outlier_fraction, 0.65,
               "outlier score (1 - the support-weighted fitting line processes the planes of "
               "N(i) u {i} give q_i) at which i is an outlier (paper preset: 0.9)");
 DEFINE_double(feature_threshold, 0.5, "m_ij below this counts as a feature vote");
-DEFINE_double(feature_fraction, 0.7, "share of feature votes above which i is a feature point");
+DEFINE_double(feature_fraction, 0.3,
+              "share of feature votes above which i is a feature point (paper preset: 0.7)");
 DEFINE_bool(remove_outliers, true, "drop points flagged as outliers from the output");
 DEFINE_double(max_removed_fraction, 0.5,
               "keep all points (and say so) if more than this share is flagged as outliers");

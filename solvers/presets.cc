@@ -29,6 +29,7 @@ DenoiseOptions PresetOptions(Preset preset) {
   options.minimizer.energy_tolerance = 0.01;
   options.final_step.projection = Projection::kPlane;
   options.final_step.outlier_fraction = 0.9;
+  options.final_step.feature_fraction = 0.7;
   return options;
 }
 
