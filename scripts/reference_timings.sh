@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Times lpd end to end (read, k-NN, optimize, project, write) against the public reference
 # implementation's figures measured on a 2-core machine with 2 threads and its schedule
-# (5 outer iterations of 1 local step and 5 global passes), and a 1M-point procedural run at
-# k = 20 with lpd's default schedule (5 outer x 2 inner). Prints wall seconds, peak memory
-# and the mean distance to the clean FANDISK mesh.
-# Usage: scripts/reference_timings.sh [LPD_DATA]   (about 2 minutes on 2 cores)
+# (5 outer iterations of 1 local step and 5 global passes) and the paper preset, and a
+# 1M-point procedural run at k = 20 (5 outer x 2 inner). Prints wall seconds, peak memory
+# and the mean distance to the clean FANDISK mesh. A second table times the same
+# ACCESSORY and 1M-point inputs at lpd's defaults (run to convergence, k from the data).
+# Usage: scripts/reference_timings.sh [LPD_DATA]   (about 5 minutes on 2 cores)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 data=${1:-${LPD_DATA:-../shared/data}}
@@ -16,7 +17,7 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 # run NAME INPUT N K LAMBDA INNER REFERENCE_SECONDS REFERENCE_MB
 run() {
   local out="$tmp/$1_k$4.xyz"
-  /usr/bin/time -f "%e %M" -o "$tmp/time.txt" ./build/lpd denoise "$2" -o "$out" --k="$4" \
+  /usr/bin/time -f "%e %M" -o "$tmp/time.txt" ./build/lpd denoise "$2" -o "$out" --preset=paper --k="$4" \
     --lambda="$5" --max_iters=5 --inner_iters="$6" --energy_tolerance=0 --quiet >/dev/null 2>"$tmp/log.txt"
   read -r seconds kilobytes <"$tmp/time.txt"
   local distance="-"
@@ -39,3 +40,24 @@ run accessory_noise_0.01 "$data/noisy/accessory_noise_0.01.xyz" 50000 150 2 5 42
 ./build/lpd noise --shape=cad_part --points=1000000 --sigma=0.005 -o "$tmp/cad_part_1m.xyz" \
   >/dev/null
 run cad_part_1m "$tmp/cad_part_1m.xyz" 1000000 20 1 2 - -
+
+echo
+echo "| input (defaults) | k chosen | iterations | lpd s | lpd MB | mean distance / diagonal |"
+echo "|---|---|---|---|---|---|"
+# run_default NAME INPUT GROUND_TRUTH
+run_default() {
+  local out="$tmp/$1_default.xyz"
+  /usr/bin/time -f "%e %M" -o "$tmp/time.txt" ./build/lpd denoise "$2" -o "$out" --quiet \
+    >"$tmp/stdout.txt" 2>/dev/null
+  read -r seconds kilobytes <"$tmp/time.txt"
+  local distance="-"
+  [ -n "$3" ] && distance=$(./build/lpd metrics "$out" --ground_truth="$3" |
+                            awk '/^mean_distance/ {print $3}')
+  local k iterations
+  k=$(awk '/^k / {print $2}' "$tmp/stdout.txt")
+  iterations=$(grep -o 'iterations [0-9]*' "$tmp/stdout.txt" | awk '{print $2}')
+  awk -v name="$1" -v k="$k" -v it="$iterations" -v s="$seconds" -v kb="$kilobytes" \
+      -v d="$distance" 'BEGIN { printf "| %s | %s | %s | %.2f | %.0f | %s |\n", name, k, it, s, kb / 1024, d }'
+}
+run_default accessory_noise_0.01 "$data/noisy/accessory_noise_0.01.xyz" ""
+run_default cad_part_1m "$tmp/cad_part_1m.xyz" shape:cad_part

@@ -37,14 +37,14 @@ for n in "${sizes[@]}"; do
   for k in 20 50 100; do
     eta=5000
     if [ "${FIXED_BALANCE:-0}" = 1 ]; then
-      balance=$(./build/lpd bench "$input" --k="$k" --max_iters=1 |
+      balance=$(./build/lpd bench "$input" --preset=paper --k="$k" --max_iters=1 |
                 awk '/^smoothness \/ stitching/ {print $NF}')
       [ -n "${target[$k]:-}" ] || target[$k]=$balance
       eta=$(awk -v b="$balance" -v t="${target[$k]}" 'BEGIN {printf "%.6g", 5000 * b / t}')
     fi
     : >"$tmp/bench.txt"
     for ((r = 0; r < repeats; ++r)); do
-      ./build/lpd bench "$input" --k="$k" --max_iters=3 --energy_tolerance=0 \
+      ./build/lpd bench "$input" --preset=paper --k="$k" --max_iters=3 --energy_tolerance=0 \
         --eta="$eta" >>"$tmp/bench.txt"
     done
     awk -v n="$n" -v k="$k" -v eta="$eta" -v local_s="$(median_of_column 2)" \
