@@ -172,6 +172,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   DefaultInput default_input;
+  energy::PointList input_points;   // kept for further passes without the outliers
   energy::PointList input_normals;  // from a PLY input with nx, ny, nz
   if (use_default) {
     default_input = MakeDefaultInput();
@@ -181,21 +182,28 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
                  default_input.shape.description().c_str(), FLAGS_default_points,
                  100.0 * FLAGS_default_noise,
                  static_cast<unsigned long long>(FLAGS_seed));
-    state = solvers::StartDenoising(default_input.points, options);
+    input_points = default_input.points;
   } else if (!resume) {
     PointCloud cloud = ReadPointCloud(arguments[0]);
+    input_points = std::move(cloud.points);
     input_normals = std::move(cloud.normals);
-    state = solvers::StartDenoising(cloud.points, options,
+  }
+  if (!resume) {
+    state = solvers::StartDenoising(input_points, options,
                                     input_normals.empty() ? nullptr : &input_normals);
   }
 
-  solvers::SolverSummary summary = solvers::MinimizeFromState(
-      options, &state,
-      FLAGS_quiet ? solvers::IterationCallback() : ProgressPrinter(options.solver));
+  const solvers::IterationCallback progress =
+      FLAGS_quiet ? solvers::IterationCallback() : ProgressPrinter(options.solver);
+  solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state, progress);
   if (!FLAGS_save_state.empty()) {
     WriteDenoiseState(FLAGS_save_state, state, options, FLAGS_overwrite);
   }
   solvers::DenoiseResult result = solvers::FinishDenoising(state, options, std::move(summary));
+  // A resumed run has no input coordinates left to start another pass from.
+  if (!resume) {
+    result = solvers::RerunWithoutOutliers(input_points, options, std::move(result), progress);
+  }
   result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
 
@@ -206,9 +214,9 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   if (!result.removal_note.empty()) std::fprintf(stderr, "note: %s\n", result.removal_note.c_str());
   std::printf(
       "points in %zu, out %zu, outliers flagged %d, removed %d, feature points %d, "
-      "iterations %d, time %.2f s (k-NN %.2f s)\n",
+      "iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
       state.order.size(), cloud.points.size(), result.num_outliers, result.num_removed,
-      result.num_features, result.summary.num_iterations, result.total_seconds,
+      result.num_features, result.summary.num_iterations, result.passes, result.total_seconds,
       result.setup_seconds);
   std::string chosen;
   if (state.neighborhood.spacing > 0.0) {

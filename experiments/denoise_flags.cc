@@ -102,6 +102,12 @@ DEFINE_double(feature_fraction, 0.3,
 DEFINE_bool(remove_outliers, true, "drop points flagged as outliers from the output");
 DEFINE_double(max_removed_fraction, 0.5,
               "keep all points (and say so) if more than this share is flagged as outliers");
+DEFINE_int32(outlier_passes, 2,
+             "denoising passes at most: while a pass removes more than "
+             "--outlier_rerun_fraction of its points, the kept points are denoised again from "
+             "their input coordinates (paper preset: 1)");
+DEFINE_double(outlier_rerun_fraction, 0.02,
+              "share of removed points above which another pass runs");
 DEFINE_bool(snap_features, false,
             "feature improvement (Sec. 3.4): move feature points onto the intersection line "
             "of the two DBSCAN clusters of their neighbours' planes t_j");

@@ -176,6 +176,55 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   return result;
 }
 
+DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
+                                   DenoiseResult first, const IterationCallback& callback) {
+  DenoiseResult result = std::move(first);
+  // last_rows[r]: the input index of row r of the last pass.
+  std::vector<int> last_rows(points.size());
+  for (size_t i = 0; i < points.size(); ++i) last_rows[i] = static_cast<int>(i);
+  int removed_by_last = result.num_removed;
+  for (int pass = 2; pass <= options.final_step.outlier_passes; ++pass) {
+    if (removed_by_last <= options.final_step.rerun_removed_fraction * last_rows.size()) break;
+    std::vector<int> rows;
+    energy::PointList kept_points;
+    for (int i : last_rows) {
+      if (!result.kept[i]) continue;
+      rows.push_back(i);
+      kept_points.push_back(points[i]);
+    }
+    const int fewest = std::max(options.choose_k ? options.neighborhood.probe_k : 0,
+                                options.problem.k) + 1;
+    if (static_cast<int>(rows.size()) <= fewest) break;
+    DenoiseState state = StartDenoising(kept_points, options);
+    SolverSummary summary = MinimizeFromState(options, &state, callback);
+    const DenoiseResult next = FinishDenoising(state, options, std::move(summary));
+    for (size_t r = 0; r < rows.size(); ++r) {
+      const int i = rows[r];
+      result.projected[i] = next.projected[r];
+      result.normals[i] = next.normals[r];
+      result.indicators.outlier_score[i] = next.indicators.outlier_score[r];
+      result.indicators.feature_score[i] = next.indicators.feature_score[r];
+      result.indicators.is_outlier[i] = next.indicators.is_outlier[r];
+      result.indicators.is_feature[i] = next.indicators.is_feature[r];
+      result.kept[i] = next.kept[r];
+    }
+    result.num_removed += next.num_removed;
+    result.summary = next.summary;
+    result.snapping = next.snapping;
+    result.removal_note = next.removal_note;
+    result.passes = pass;
+    removed_by_last = next.num_removed;
+    last_rows = std::move(rows);
+  }
+  result.num_outliers = 0;
+  result.num_features = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    result.num_outliers += result.indicators.is_outlier[i];
+    result.num_features += result.indicators.is_feature[i];
+  }
+  return result;
+}
+
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
                               const IterationCallback& callback,
                               const energy::PointList* normals) {
@@ -183,7 +232,8 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
   const Clock::time_point start = Clock::now();
   DenoiseState state = StartDenoising(points, options, normals);
   SolverSummary summary = MinimizeFromState(options, &state, callback);
-  DenoiseResult result = FinishDenoising(state, options, std::move(summary));
+  DenoiseResult result = RerunWithoutOutliers(
+      points, options, FinishDenoising(state, options, std::move(summary)), callback);
   result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

@@ -66,6 +66,7 @@ struct DenoiseResult {
   int num_removed = 0;               // actually removed
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
+  int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
   std::string removal_note;          // why flagged outliers were kept, if they were
   SolverSummary summary;
   double setup_seconds = 0.0;        // normalization and k-NN graph
@@ -99,7 +100,15 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
 DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& options,
                               SolverSummary summary);
 
-// The three stages in a row.
+// Further passes after `first` (options.final_step.outlier_passes): while the last pass
+// removed more than rerun_removed_fraction of its points, the points it kept are denoised
+// again from their input coordinates `points` and their results replace the earlier ones.
+// Removed points keep the values of the pass that removed them. `callback` sees every pass.
+DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
+                                   DenoiseResult first,
+                                   const IterationCallback& callback = nullptr);
+
+// The three stages in a row, then RerunWithoutOutliers.
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
                               const IterationCallback& callback = nullptr,
                               const energy::PointList* normals = nullptr);

@@ -35,6 +35,10 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
     out << "feature_fraction must be in [0, 1), got " << feature_fraction;
   } else if (!InUnitInterval(max_removed_fraction)) {
     out << "max_removed_fraction must be in (0, 1], got " << max_removed_fraction;
+  } else if (outlier_passes < 1 || outlier_passes > 10) {
+    out << "outlier_passes must be in [1, 10], got " << outlier_passes;
+  } else if (!(rerun_removed_fraction >= 0.0 && rerun_removed_fraction <= 1.0)) {
+    out << "outlier_rerun_fraction must be in [0, 1], got " << rerun_removed_fraction;
   } else {
     return snapping.IsValid(error);
   }

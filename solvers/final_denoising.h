@@ -47,6 +47,11 @@ struct FinalDenoisingOptions {
   // Removal is skipped (and reported) when more than this share of all points is flagged:
   // then mu_l is below the noise level and the indicator no longer separates outliers.
   double max_removed_fraction = 0.5;
+  // Denoising passes at most: when a pass removes more than rerun_removed_fraction of its
+  // points, the next pass starts over on the points it kept (their input coordinates), so
+  // that neither the removed outliers nor their planes shape the rest (paper: 1 pass).
+  int outlier_passes = 2;
+  double rerun_removed_fraction = 0.02;
   // The optional feature improvement of Sec. 3.4 (off by default, as in the paper's runs).
   bool snap_features = false;
   FeatureSnappingOptions snapping;

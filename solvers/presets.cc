@@ -30,6 +30,7 @@ DenoiseOptions PresetOptions(Preset preset) {
   options.final_step.projection = Projection::kPlane;
   options.final_step.outlier_fraction = 0.9;
   options.final_step.feature_fraction = 0.7;
+  options.final_step.outlier_passes = 1;
   return options;
 }
 

@@ -17,10 +17,11 @@ struct NoisyShape {
   energy::PointList points;
 };
 
-NoisyShape NoisyCadPart(int n, double sigma) {
+NoisyShape NoisyCadPart(int n, double sigma, double outlier_ratio = 0.0) {
   NoisyShape noisy{experiments::MakeShape({"cad_part", {}}), {}};
   experiments::NoiseOptions noise;
   noise.sigma = sigma;
+  noise.outlier_ratio = outlier_ratio;
   noise.seed = 3;
   noisy.points = experiments::ApplyNoise(noisy.shape.Sample(n, 2).points, {}, noise).points;
   return noisy;
@@ -100,6 +101,31 @@ TEST(DefaultPreset, ADenserSamplingGetsMoreNeighboursAndNoWorseResult) {
   const DenoiseResult sparse_result = DenoisePointSet(sparse.points, options);
   const DenoiseResult dense_result = DenoisePointSet(dense.points, options);
   EXPECT_LE(MeanDistance(dense.shape, dense_result), MeanDistance(sparse.shape, sparse_result));
+}
+
+TEST(DefaultPreset, ASecondPassWithoutTheOutliersGivesTheOutlierFreeResult) {
+  const NoisyShape clean = NoisyCadPart(6000, 0.004);
+  const NoisyShape with_outliers = NoisyCadPart(6000, 0.004, 0.2);  // the same points first
+  DenoiseOptions options = Defaults();
+  const double outlier_free = MeanDistance(clean.shape, DenoisePointSet(clean.points, options));
+  const DenoiseResult two_passes = DenoisePointSet(with_outliers.points, options);
+  options.final_step.outlier_passes = 1;
+  const DenoiseResult one_pass = DenoisePointSet(with_outliers.points, options);
+  EXPECT_EQ(two_passes.passes, 2);
+  EXPECT_EQ(one_pass.passes, 1);
+  // The second pass only removes more: every point removed by the first stays removed.
+  int removed_once = 0;
+  for (size_t i = 0; i < one_pass.kept.size(); ++i) {
+    removed_once += !one_pass.kept[i];
+    if (!one_pass.kept[i]) EXPECT_FALSE(two_passes.kept[i]) << "point " << i;
+  }
+  EXPECT_GT(two_passes.num_removed, removed_once);
+  const double first = MeanDistance(with_outliers.shape, one_pass);
+  const double second = MeanDistance(with_outliers.shape, two_passes);
+  // Measured: one pass 2.16x the outlier-free distance, two passes 1.33x (6,000 points; at
+  // 25,000 points 1.10x, docs/method.md).
+  EXPECT_LT(second, 0.75 * first);
+  EXPECT_LT(second, 1.5 * outlier_free) << "one pass: " << first / outlier_free << "x";
 }
 
 }  // namespace
