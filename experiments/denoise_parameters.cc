@@ -107,7 +107,9 @@ const std::vector<Parameter>& Parameters() {
   static const std::vector<Parameter> parameters = {
       Choice(
           "k", kBoth,
-          [](const O& o) { return o.choose_k ? std::string("auto") : std::to_string(o.problem.k); },
+          [](const O& o) {
+            return o.choose_k ? std::string("auto") : std::to_string(o.problem.k);
+          },
           [](const std::string& text, O& o) {
             o.choose_k = text == "auto";
             if (!o.choose_k) o.problem.k = ParseInteger("k", text);

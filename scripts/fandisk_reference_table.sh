@@ -18,8 +18,8 @@ for noise in 0.01 0.03; do
   for k in 20 50; do
     for inner in 2 5; do
       out="$tmp/out_${noise}_${k}_${inner}.xyz"
-      seconds=$( { /usr/bin/time -f %e ./build/lpd denoise "$input" -o "$out" --preset=paper --k="$k" \
-                   --inner_iters="$inner" --energy_tolerance=0 --quiet >/dev/null; } 2>&1 | tail -1)
+      seconds=$( { /usr/bin/time -f %e ./build/lpd denoise "$input" -o "$out" --preset=paper \
+                   --k="$k" --inner_iters="$inner" --energy_tolerance=0 --quiet >/dev/null; } 2>&1 | tail -1)
       echo "| $noise | $(mean "$input") | $k | 5 x $inner | $(mean "$out") | $reference | ${seconds} s |"
     done
   done

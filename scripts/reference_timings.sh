@@ -17,7 +17,8 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 # run NAME INPUT N K LAMBDA INNER REFERENCE_SECONDS REFERENCE_MB
 run() {
   local out="$tmp/$1_k$4.xyz"
-  /usr/bin/time -f "%e %M" -o "$tmp/time.txt" ./build/lpd denoise "$2" -o "$out" --preset=paper --k="$4" \
+  /usr/bin/time -f "%e %M" -o "$tmp/time.txt" ./build/lpd denoise "$2" -o "$out" \
+    --preset=paper --k="$4" \
     --lambda="$5" --max_iters=5 --inner_iters="$6" --energy_tolerance=0 --quiet >/dev/null 2>"$tmp/log.txt"
   read -r seconds kilobytes <"$tmp/time.txt"
   local distance="-"
@@ -57,7 +58,9 @@ run_default() {
   k=$(awk '/^k / {print $2}' "$tmp/stdout.txt")
   iterations=$(grep -o 'iterations [0-9]*' "$tmp/stdout.txt" | awk '{print $2}')
   awk -v name="$1" -v k="$k" -v it="$iterations" -v s="$seconds" -v kb="$kilobytes" \
-      -v d="$distance" 'BEGIN { printf "| %s | %s | %s | %.2f | %.0f | %s |\n", name, k, it, s, kb / 1024, d }'
+      -v d="$distance" 'BEGIN {
+      printf "| %s | %s | %s | %.2f | %.0f | %s |\n", name, k, it, s, kb / 1024, d
+    }'
 }
 run_default accessory_noise_0.01 "$data/noisy/accessory_noise_0.01.xyz" ""
 run_default cad_part_1m "$tmp/cad_part_1m.xyz" shape:cad_part

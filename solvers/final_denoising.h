@@ -11,7 +11,8 @@
 //                        its neighbours' nearest) and weighting by support (a plane fitted to
 //                        scattered outliers passes through a few of them and explains little)
 //                        is ours: on cad_part with 20% uniform outliers, recall 0.23 with the
-//                        plain 90% vote over l_ji, 0.91 at precision 0.99 this way (docs/method.md).
+//                        plain 90% vote over l_ji, 0.91 at precision 0.99 this way
+//                        (docs/method.md).
 //   feature score of i = fraction of pairs (i, j) in M with m_ij < feature_line_threshold;
 //                        i is near a feature if the score > feature_fraction (paper: 70%, 0.5;
 //                        default 30%: with data-scaled weights the planes on either side of

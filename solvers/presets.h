@@ -3,8 +3,9 @@
 //   kDefault  what `lpd denoise` runs: k from the noise and spacing (neighborhood_size.h),
 //             eta and lambda from the data (energy/data_scaled_weights.h), mu_l from a
 //             robust noise estimate, run to convergence, sphere projection, a second pass
-//             without the outliers when the first removed more than 2% of the points. Every weight is
-//             dimensionless, so one set holds across scales, densities and noise levels.
+//             without the outliers when the first removed more than 2% of the points, the
+//             indicator thresholds 65% / 30%. Every weight is dimensionless, so one set holds
+//             across scales and noise levels.
 //   kPaper    the paper's literal setting (Table 2, Alg. 1, Sec. 3.4), for reproduction:
 //             k = 20, lambda = 1, eta = 5000, mu_l = 5e-9, mu_m = 0.13, 5 outer iterations
 //             of 2 inner passes, stop at a 1% energy change over three iterations,

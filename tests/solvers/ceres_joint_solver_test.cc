@@ -51,7 +51,8 @@ TEST(CeresJointSolver, ObjectiveIsTheEnergyWithOptimalLineProcesses) {
   energy::ProblemOptions options;
   options.k = 6;
   const energy::Problem problem = energy::BuildProblem(testing::NoisySphere(200, 0.05, 3), options);
-  energy::EnergyParameters paper = PresetOptions(Preset::kPaper).minimizer.energy;  // mu_l far below the residuals
+  // The paper's weights, with mu_l far below the residuals.
+  const energy::EnergyParameters paper = PresetOptions(Preset::kPaper).minimizer.energy;
   for (const energy::EnergyParameters& w : {testing::BalancedParameters(), paper}) {
     for (uint64_t seed = 1; seed <= 5; ++seed) {
       energy::Variables v = testing::RandomVariables(problem, seed);
