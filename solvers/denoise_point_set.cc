@@ -192,8 +192,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
       rows.push_back(i);
       kept_points.push_back(points[i]);
     }
-    const int fewest = std::max(options.choose_k ? options.neighborhood.probe_k : 0,
-                                options.problem.k) + 1;
+    const int fewest = (options.choose_k ? options.neighborhood.min_k : options.problem.k) + 1;
     if (static_cast<int>(rows.size()) <= fewest) break;
     DenoiseState state = StartDenoising(kept_points, options);
     SolverSummary summary = MinimizeFromState(options, &state, callback);

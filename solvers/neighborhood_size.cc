@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "energy/problem.h"
@@ -17,8 +19,10 @@ bool NeighborhoodSizeOptions::IsValid(std::string* error) const {
     out << "probe_k must be >= 4, got " << probe_k;
   } else if (!(radius_in_sigmas > 0.0) || !std::isfinite(radius_in_sigmas)) {
     out << "k_radius_sigmas must be finite and > 0, got " << radius_in_sigmas;
-  } else if (min_k < 3 || max_k < min_k) {
-    out << "need 3 <= min_k <= max_k, got " << min_k << " and " << max_k;
+  } else if (min_k < 3) {
+    out << "min_k must be >= 3, got " << min_k;
+  } else if (max_k < min_k) {
+    out << "max_k must be >= " << min_k << " (the smallest k chosen), got " << max_k;
   } else {
     return true;
   }
@@ -29,8 +33,14 @@ bool NeighborhoodSizeOptions::IsValid(std::string* error) const {
 NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                         const NeighborhoodSizeOptions& options,
                                         int num_threads) {
+  const int n = static_cast<int>(points.size());
+  if (n < options.min_k + 1) {
+    throw std::invalid_argument("need at least " + std::to_string(options.min_k + 1) +
+                                " points to choose k from the data, got " + std::to_string(n) +
+                                " (give a smaller --k)");
+  }
   energy::ProblemOptions probe_options;
-  probe_options.k = options.probe_k;
+  probe_options.k = std::min(options.probe_k, n - 1);
   const energy::Problem probe = energy::BuildProblem(points, probe_options, num_threads);
   const energy::Variables planes =
       InitialState(probe, energy::EnergyParameters(), Initialization::kPlaneFit, num_threads);

@@ -44,6 +44,7 @@ write("good.xyz", plane)
 write("nan.xyz", plane[:50] + [(0.5, float("nan"), 0.0)] + plane[50:])
 write("inf.xyz", plane[:50] + [(0.5, float("inf"), 0.0)] + plane[50:])
 write("few.xyz", plane[:20])
+write("tiny.xyz", plane[:5])
 write("same.xyz", [(1.0, 2.0, 3.0)] * 100)
 write("collinear.xyz", [(0.01 * i, 0.02 * i, -0.03 * i) for i in range(200)])
 write("coplanar.xyz", [(random.random(), random.random(), 0.0) for _ in range(300)])
@@ -59,6 +60,14 @@ expect_error malformed "$dir/malformed.xyz"
 expect_error nan "$dir/nan.xyz"
 expect_error inf "$dir/inf.xyz"
 expect_error too_few "$dir/few.xyz" --k=20
+expect_error too_few_for_auto_k "$dir/tiny.xyz"
+expect_error bad_k_text "$dir/good.xyz" --k=auto20
+expect_error unknown_preset "$dir/good.xyz" --preset=fast
+expect_error zero_passes "$dir/good.xyz" --outlier_passes=0
+expect_error negative_fit_balance "$dir/good.xyz" --fit_balance=-1
+expect_error zero_k_radius "$dir/good.xyz" --k_radius_sigmas=0
+expect_error max_k_below_min "$dir/good.xyz" --max_k=2
+expect_error unknown_projection "$dir/good.xyz" --projection=cube
 expect_error identical "$dir/same.xyz" --k=8
 expect_error negative_lambda "$dir/good.xyz" --lambda=-1
 expect_error zero_k "$dir/good.xyz" --k=0
@@ -89,7 +98,9 @@ expect_finite coplanar "$dir/coplanar.xyz"
 expect_finite duplicates "$dir/duplicates.xyz"
 for shape in collinear coplanar duplicates; do
   expect_finite "${shape}_ceres" "$dir/$shape.xyz" --solver=ceres
+  expect_finite "${shape}_auto_k" "$dir/$shape.xyz" --k=auto
 done
+expect_finite few_points_auto_k "$dir/few.xyz" --k=auto
 
 # An existing output file is never overwritten without --overwrite, and is refused before
 # any work (no iteration is printed).
