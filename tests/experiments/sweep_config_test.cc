@@ -72,7 +72,7 @@ TEST(SweepConfig, ErrorsNameTheLineAndTheKey) {
   const std::string base = "datasets:\n  - shape: cube\nmethods:\n  - method: lpd\n";
   EXPECT_NE(LoadError(base + "    kk: 3\n").find(":5: unknown parameter 'kk' of method lpd"),
             std::string::npos);
-  EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: parameter k: 'x' is not a number"),
+  EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: parameter k: 'x' is neither an integer nor auto"),
             std::string::npos);
   EXPECT_NE(LoadError("datasets:\n  - shape: teapot\nmethods:\n  - method: none\n")
                 .find(":2: unknown shape 'teapot'"),
