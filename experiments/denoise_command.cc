@@ -71,8 +71,9 @@ solvers::IterationCallback ProgressPrinter(solvers::Solver solver) {
                  record.iteration, record.energy.total(), record.energy.fitting,
                  record.energy.smoothness, record.energy.stitching);
     if (solver == solvers::Solver::kAlternating) {
-      std::fprintf(stderr, "local %.3f s  global %.3f s  cg %d\n", record.local_seconds,
-                   record.global_seconds, record.cg_iterations);
+      std::fprintf(stderr, "move %.2e  local %.3f s  global %.3f s  cg %d\n",
+                   record.point_motion, record.local_seconds, record.global_seconds,
+                   record.cg_iterations);
     } else {
       std::fprintf(stderr, "elapsed %.3f s  linear iterations %d\n", record.elapsed_seconds,
                    record.cg_iterations);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -93,6 +94,7 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
   const int last_iteration = state.iterations + options.max_iterations;
   for (int iteration = state.iterations + 1; iteration <= last_iteration; ++iteration) {
     const Clock::time_point iteration_start = Clock::now();
+    const energy::PlaneField previous_t = v->t;
     IterationRecord record;
     record.iteration = iteration;
     // Local tangent-plane fitting step (Alg. 1 lines 9-10).
@@ -144,6 +146,9 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
     record.energy = options.trace_blocks
                         ? summary.steps.back().energy
                         : energy::EvaluateEnergy(problem, parameters, *v, threads);
+    if (iteration > 1) {
+      record.point_motion = RmsProjectedPointChange(problem, previous_t, v->t, threads);
+    }
     record.seconds = SecondsSince(iteration_start);
     record.elapsed_seconds = SecondsSince(run_start) - traced_seconds;
     summary.iterations.push_back(record);
@@ -190,6 +195,19 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
   if (summary.termination == TerminationType::kNoConvergence &&
       !(state.gnc_mu_l.AtTarget(parameters.mu_l) && state.gnc_mu_m.AtTarget(parameters.mu_m))) {
     summary.message = "reached max_iters before graduated non-convexity reached its targets";
+  } else if (summary.termination == TerminationType::kNoConvergence &&
+             !summary.iterations.empty() &&
+             !std::isnan(summary.iterations.back().point_motion)) {
+    // Say how far from standing still the output is: a slow drift of the plane field where
+    // the data leave a tilt undetermined lowers the energy long after the points settle.
+    std::ostringstream out;
+    out << summary.message << "; the output points moved " << std::setprecision(2)
+        << summary.iterations.back().point_motion << " of the diagonal (RMS) in the last one";
+    if (options.mu_l_noise_sigmas > 0.0) {
+      const double sigma = std::sqrt(parameters.mu_l) / options.mu_l_noise_sigmas;
+      out << ", " << summary.iterations.back().point_motion / sigma << " noise sigma";
+    }
+    summary.message = out.str();
   }
   summary.mu_l = parameters.mu_l;
   summary.eta = parameters.eta;

@@ -57,4 +57,29 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
   return 1.4826 * *middle;
 }
 
+double RmsProjectedPointChange(const energy::Problem& problem, const energy::PlaneField& old_t,
+                               const energy::PlaneField& new_t, int num_threads) {
+  const int n = problem.num_points();
+  if (n == 0) return 0.0;
+  auto project = [&](const energy::PlaneField& t, int i, Eigen::Vector3d* projected) {
+    const Eigen::Vector3d normal = t.row(i).head<3>().transpose();
+    const double squared = normal.squaredNorm();
+    if (!(squared > 1e-24)) return false;
+    const energy::Point3& p = problem.points[i];
+    *projected = p - normal * ((normal.dot(p) + t(i, 3)) / squared);
+    return true;
+  };
+  std::vector<double> squared_motion(n, 0.0);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+  for (int i = 0; i < n; ++i) {
+    Eigen::Vector3d before, after;
+    if (project(old_t, i, &before) && project(new_t, i, &after)) {
+      squared_motion[i] = (after - before).squaredNorm();
+    }
+  }
+  double sum = 0.0;  // summed in order, so the result does not depend on the threads
+  for (double value : squared_motion) sum += value;
+  return std::sqrt(sum / n);
+}
+
 }  // namespace lpd::solvers

@@ -48,6 +48,9 @@ struct IterationRecord {
   // energy's only during graduated non-convexity).
   double mu_l = NAN;
   double mu_m = NAN;
+  // RMS distance the output points (p_i projected onto t_i) moved in this iteration, in the
+  // normalized frame (diagonal 1); NaN for the joint solve and for the first iteration.
+  double point_motion = NAN;
 };
 
 // Called after every iteration; returning false stops the run (USER_ABORT).
