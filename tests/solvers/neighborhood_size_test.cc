@@ -1,0 +1,49 @@
+// k from the data on a noisy unit square, where the noise and the spacing are known in closed
+// form: sigma along the normal, and one point per 1/n of area.
+#include "solvers/neighborhood_size.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "test_problems.h"
+
+namespace lpd::solvers {
+namespace {
+
+TEST(NeighborhoodSize, RecoversTheNoiseAndSpacingOfANoisySquare) {
+  constexpr int kPoints = 20000;
+  constexpr double kSigma = 0.006;
+  const double diagonal = std::sqrt(2.0);  // the frame's scale (the z spread is negligible)
+  const double sigma = kSigma / diagonal;
+  // alpha_i, the mean squared distance to the probe's neighbours, carries the noise as well:
+  // 2 sigma^2 per pair on top of probe_k spacing^2 / (2 pi). The spacing read from it is
+  // sqrt(spacing^2 + 4 pi sigma^2 / probe_k).
+  const NeighborhoodSizeOptions options;
+  const double true_spacing = std::sqrt(1.0 / kPoints) / diagonal;
+  const double spacing =
+      std::sqrt(true_spacing * true_spacing + 4.0 * M_PI * sigma * sigma / options.probe_k);
+  const NeighborhoodSize size =
+      ChooseNeighborhoodSize(testing::NoisyPlane(kPoints, kSigma, 3), options, 2);
+  EXPECT_NEAR(size.noise_sigma, sigma, 0.1 * sigma);
+  EXPECT_NEAR(size.spacing, spacing, 0.1 * spacing);
+  // The k of that noise and spacing: pi (4.2 sigma / spacing)^2 = 33.
+  const double expected_k = M_PI * std::pow(options.radius_in_sigmas * sigma / spacing, 2);
+  EXPECT_NEAR(size.k, expected_k, 0.25 * expected_k);
+}
+
+TEST(NeighborhoodSize, StaysWithinItsBoundsAndRefusesTooFewPoints) {
+  NeighborhoodSizeOptions options;
+  // Almost no noise: the floor.
+  EXPECT_EQ(ChooseNeighborhoodSize(testing::NoisyPlane(5000, 1e-6, 4), options, 1).k,
+            options.min_k);
+  // Noise far above the spacing: the ceiling.
+  options.max_k = 30;
+  EXPECT_EQ(ChooseNeighborhoodSize(testing::NoisyPlane(5000, 0.05, 4), options, 1).k, 30);
+  EXPECT_THROW(ChooseNeighborhoodSize(testing::NoisyPlane(options.min_k, 0.01, 4), options, 1),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace lpd::solvers
