@@ -9,6 +9,7 @@
 
 #include <gflags/gflags.h>
 
+#include "energy/data_scaled_weights.h"
 #include "energy/term_balance.h"
 #include "experiments/commands.h"
 #include "experiments/denoise_flags.h"
@@ -37,15 +38,16 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
   const energy::PointList points = ReadPoints(arguments[0]);
   const double read_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   solvers::DenoiseState state = solvers::StartDenoising(points, options);
-  const double balance =
-      energy::MedianSmoothnessToStitchingRatio(state.problem, options.minimizer.energy);
+  const double balance = energy::MedianSmoothnessToStitchingRatio(
+      state.problem,
+      energy::ScaleWeightsToData(state.problem, options.minimizer.energy, options.weights));
   solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state);
   const solvers::DenoiseResult result =
       solvers::FinishDenoising(state, options, std::move(summary));
   const double total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
   std::printf("input %s: n = %zu, k = %d, threads = %d, %d outer x %d inner iterations\n",
-              arguments[0].c_str(), points.size(), options.problem.k,
+              arguments[0].c_str(), points.size(), state.problem.k(),
               options.minimizer.num_threads, options.minimizer.max_iterations,
               options.minimizer.inner_iterations);
   std::printf("read %.3f s, k-NN graph and weights %.3f s\n", read_seconds,
