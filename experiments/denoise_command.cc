@@ -203,7 +203,8 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   solvers::DenoiseResult result = solvers::FinishDenoising(state, options, std::move(summary));
   // A resumed run has no input coordinates left to start another pass from.
   if (!resume) {
-    result = solvers::RerunWithoutOutliers(input_points, options, std::move(result), progress);
+    result = solvers::RerunWithoutOutliers(input_points, options, std::move(result), progress,
+                                           input_normals.empty() ? nullptr : &input_normals);
   }
   result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());

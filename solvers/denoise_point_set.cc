@@ -177,7 +177,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
 }
 
 DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
-                                   DenoiseResult first, const IterationCallback& callback) {
+                                   DenoiseResult first, const IterationCallback& callback,
+                                   const energy::PointList* normals) {
   DenoiseResult result = std::move(first);
   // last_rows[r]: the input index of row r of the last pass.
   std::vector<int> last_rows(points.size());
@@ -186,15 +187,16 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
   for (int pass = 2; pass <= options.final_step.outlier_passes; ++pass) {
     if (removed_by_last <= options.final_step.rerun_removed_fraction * last_rows.size()) break;
     std::vector<int> rows;
-    energy::PointList kept_points;
+    energy::PointList kept_points, kept_normals;
     for (int i : last_rows) {
       if (!result.kept[i]) continue;
       rows.push_back(i);
       kept_points.push_back(points[i]);
+      if (normals) kept_normals.push_back((*normals)[i]);
     }
     const int fewest = (options.choose_k ? options.neighborhood.min_k : options.problem.k) + 1;
     if (static_cast<int>(rows.size()) <= fewest) break;
-    DenoiseState state = StartDenoising(kept_points, options);
+    DenoiseState state = StartDenoising(kept_points, options, normals ? &kept_normals : nullptr);
     SolverSummary summary = MinimizeFromState(options, &state, callback);
     const DenoiseResult next = FinishDenoising(state, options, std::move(summary));
     for (size_t r = 0; r < rows.size(); ++r) {
@@ -232,7 +234,7 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
   DenoiseState state = StartDenoising(points, options, normals);
   SolverSummary summary = MinimizeFromState(options, &state, callback);
   DenoiseResult result = RerunWithoutOutliers(
-      points, options, FinishDenoising(state, options, std::move(summary)), callback);
+      points, options, FinishDenoising(state, options, std::move(summary)), callback, normals);
   result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

@@ -103,10 +103,12 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
 // Further passes after `first` (options.final_step.outlier_passes): while the last pass
 // removed more than rerun_removed_fraction of its points, the points it kept are denoised
 // again from their input coordinates `points` and their results replace the earlier ones.
-// Removed points keep the values of the pass that removed them. `callback` sees every pass.
+// Removed points keep the values of the pass that removed them. `callback` sees every pass;
+// `normals` (input order) are those of StartDenoising.
 DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
                                    DenoiseResult first,
-                                   const IterationCallback& callback = nullptr);
+                                   const IterationCallback& callback = nullptr,
+                                   const energy::PointList* normals = nullptr);
 
 // The three stages in a row, then RerunWithoutOutliers.
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
