@@ -106,7 +106,7 @@ DEFINE_int32(outlier_passes, 2,
              "denoising passes at most: while a pass removes more than "
              "--outlier_rerun_fraction of its points, the kept points are denoised again from "
              "their input coordinates (paper preset: 1)");
-DEFINE_double(outlier_rerun_fraction, 0.02,
+DEFINE_double(outlier_rerun_fraction, 0.05,
               "share of removed points above which another pass runs");
 DEFINE_bool(snap_features, false,
             "feature improvement (Sec. 3.4): move feature points onto the intersection line "

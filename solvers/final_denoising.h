@@ -52,7 +52,7 @@ struct FinalDenoisingOptions {
   // points, the next pass starts over on the points it kept (their input coordinates), so
   // that neither the removed outliers nor their planes shape the rest (paper: 1 pass).
   int outlier_passes = 2;
-  double rerun_removed_fraction = 0.02;
+  double rerun_removed_fraction = 0.05;
   // The optional feature improvement of Sec. 3.4 (off by default, as in the paper's runs).
   bool snap_features = false;
   FeatureSnappingOptions snapping;

@@ -3,7 +3,7 @@
 //   kDefault  what `lpd denoise` runs: k from the noise and spacing (neighborhood_size.h),
 //             eta and lambda from the data (energy/data_scaled_weights.h), mu_l from a
 //             robust noise estimate, run to convergence, sphere projection, a second pass
-//             without the outliers when the first removed more than 2% of the points, the
+//             without the outliers when the first removed more than 5% of the points, the
 //             indicator thresholds 65% / 30%. Every weight is dimensionless, so one set holds
 //             across scales and noise levels.
 //   kPaper    the paper's literal setting (Table 2, Alg. 1, Sec. 3.4), for reproduction:
