@@ -13,7 +13,10 @@ namespace {
 
 constexpr char kMagic[8] = {'L', 'P', 'D', 'S', 'T', 'A', 'T', 'E'};
 constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
-constexpr uint32_t kVersion = 1;
+// 2: the saved parameters include the data-derived rules (k = auto, fit and smoothing
+// balance, projection, passes). A version-1 state lacks them and would resume under other
+// weights than it was written with, so it is refused.
+constexpr uint32_t kVersion = 2;
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 
 class Writer {
