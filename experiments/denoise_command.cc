@@ -221,13 +221,13 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
       result.num_features, result.summary.num_iterations, result.passes, result.total_seconds,
       result.setup_seconds);
   std::string chosen;
-  if (state.neighborhood.spacing > 0.0) {
+  if (result.neighborhood.spacing > 0.0) {
     char text[160];
     std::snprintf(text, sizeof(text), " (from noise %.3g and spacing %.3g of the diagonal)",
-                  state.neighborhood.noise_sigma, state.neighborhood.spacing);
+                  result.neighborhood.noise_sigma, result.neighborhood.spacing);
     chosen = text;
   }
-  std::printf("k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", state.problem.k(),
+  std::printf("k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", result.neighborhood.k,
               chosen.c_str(), result.summary.eta, result.summary.lambda, result.summary.mu_l,
               options.minimizer.energy.mu_m);
   if (options.final_step.snap_features) {

@@ -134,6 +134,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   DenoiseResult result;
   result.summary = std::move(summary);
   result.setup_seconds = state.setup_seconds;
+  result.neighborhood = state.neighborhood;
+  result.neighborhood.k = problem.k();  // also for a resumed state, which keeps no estimates
   if (options.final_step.projection == Projection::kSphere) {
     ProjectOntoLocalSpheres(problem, state.variables, options.minimizer.num_threads,
                             &result.projected, &result.normals);
@@ -214,6 +216,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     result.snapping = next.snapping;
     result.removal_note = next.removal_note;
     result.passes = pass;
+    result.neighborhood = next.neighborhood;
     removed_by_last = next.num_removed;
     last_rows = std::move(rows);
   }

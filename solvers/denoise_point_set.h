@@ -67,6 +67,7 @@ struct DenoiseResult {
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
+  NeighborhoodSize neighborhood;     // k (and its estimates when chosen) of the last pass
   std::string removal_note;          // why flagged outliers were kept, if they were
   SolverSummary summary;
   double setup_seconds = 0.0;        // normalization and k-NN graph
