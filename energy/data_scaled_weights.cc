@@ -1,9 +1,7 @@
 #include "energy/data_scaled_weights.h"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <vector>
 
 #include "energy/term_balance.h"
 
@@ -11,13 +9,6 @@ namespace lpd::energy {
 namespace {
 
 bool FiniteNonNegative(double x) { return std::isfinite(x) && x >= 0.0; }
-
-double MedianAlpha(const Problem& problem) {
-  std::vector<double> alpha = problem.alpha;
-  const auto middle = alpha.begin() + alpha.size() / 2;
-  std::nth_element(alpha.begin(), middle, alpha.end());
-  return *middle;
-}
 
 }  // namespace
 

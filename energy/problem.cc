@@ -1,7 +1,9 @@
 #include "energy/problem.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace lpd::energy {
 
@@ -16,6 +18,14 @@ bool ProblemOptions::IsValid(std::string* error) const {
     return false;
   }
   return true;
+}
+
+double MedianAlpha(const Problem& problem) {
+  if (problem.alpha.empty()) return 0.0;
+  std::vector<double> alpha = problem.alpha;
+  const auto middle = alpha.begin() + alpha.size() / 2;
+  std::nth_element(alpha.begin(), middle, alpha.end());
+  return *middle;
 }
 
 void ComputeWeights(double min_squared_distance_ratio, Problem* problem) {

@@ -43,6 +43,10 @@ struct Problem {
 Problem BuildProblem(const PointList& input_points, const ProblemOptions& options,
                      int num_threads = 1);
 
+// The median of alpha_i (0 for an empty problem): the squared neighbourhood scale that the
+// data-derived weights and the spacing estimate are expressed in.
+double MedianAlpha(const Problem& problem);
+
 // Fills alpha and beta from problem->points and problem->graph (used by BuildProblem and by
 // tests that construct graphs by hand).
 void ComputeWeights(double min_squared_distance_ratio, Problem* problem);

@@ -113,13 +113,12 @@ const std::vector<Parameter>& Parameters() {
           [](const std::string& text, O& o) {
             o.choose_k = text == "auto";
             if (o.choose_k) return;
-            char* end = nullptr;
-            const long k = std::strtol(text.c_str(), &end, 10);
-            if (text.empty() || *end != '\0' || std::abs(k) > 1000000000L) {
+            try {
+              o.problem.k = ParseInteger("k", text);
+            } catch (const std::invalid_argument&) {
               throw std::invalid_argument("parameter k: '" + text +
                                           "' is neither an integer nor auto");
             }
-            o.problem.k = static_cast<int>(k);
           }),
       Number("k_radius_sigmas", kBoth,
              [](O& o) -> double& { return o.neighborhood.radius_in_sigmas; }),

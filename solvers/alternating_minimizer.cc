@@ -1,10 +1,8 @@
 #include "solvers/alternating_minimizer.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 #include "energy/energy.h"
@@ -104,9 +102,7 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
     }).seconds;
     if (std::isnan(state.mu_l)) {  // the first local step fixes the target mu_l
       if (options.mu_l_noise_sigmas > 0.0) {
-        const double scale = options.mu_l_noise_sigmas * RobustFittingResidualScale(problem, *v);
-        // Noise-free input has zero residuals; keep mu_l positive.
-        parameters.mu_l = std::max(scale * scale, std::numeric_limits<double>::min());
+        parameters.mu_l = NoiseScaledMuL(problem, *v, options.mu_l_noise_sigmas);
       }
       state.mu_l = parameters.mu_l;
     }

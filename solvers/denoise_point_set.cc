@@ -1,9 +1,7 @@
 #include "solvers/denoise_point_set.h"
 
 #include <chrono>
-#include <algorithm>
 #include <cstdio>
-#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -108,9 +106,8 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
     CeresJointSolver::Options joint = options.joint;
     joint.num_threads = minimizer.num_threads;
     if (minimizer.mu_l_noise_sigmas > 0.0) {  // the joint solve starts from fitted planes
-      const double scale = minimizer.mu_l_noise_sigmas *
-                           RobustFittingResidualScale(state->problem, state->variables);
-      minimizer.energy.mu_l = std::max(scale * scale, std::numeric_limits<double>::min());
+      minimizer.energy.mu_l =
+          NoiseScaledMuL(state->problem, state->variables, minimizer.mu_l_noise_sigmas);
     }
     summary = CeresJointSolver::Minimize(state->problem, minimizer.energy, joint,
                                          &state->variables, callback);

@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "energy/plane_projection.h"
 #include "solvers/dbscan.h"
 
 namespace lpd::solvers {
@@ -15,7 +16,6 @@ namespace {
 constexpr int kMaxClusters = 3;  // Sec. 3.4: "a maximum of three clusters"
 // Below this |n_1 x n_2| (about 0.6 degrees) two planes have no usable intersection line.
 constexpr double kMinIntersectionSine = 1e-2;
-constexpr double kMinNormalSquaredNorm = 1e-24;
 constexpr double kPi = 3.14159265358979323846;
 
 // A plane n^T x + d = 0 with |n| = 1, from a 4-vector t = (n, d) up to scale.
@@ -61,7 +61,9 @@ SnappingCounts SnapFeaturePoints(const energy::Problem& problem, const energy::V
     for (int e = graph.incident_offsets[i]; e < graph.incident_offsets[i + 1]; ++e) {
       const auto& pair = graph.pairs[graph.incident_pairs[e]];
       const Eigen::Vector4d t = v.t.row(pair[0] == i ? pair[1] : pair[0]).transpose();
-      if (t.head<3>().squaredNorm() > kMinNormalSquaredNorm) planes.push_back(UnitNormalPlane(t));
+      if (t.head<3>().squaredNorm() > energy::kMinPlaneNormalSquaredNorm) {
+        planes.push_back(UnitNormalPlane(t));
+      }
     }
     // DBSCAN distance 1 - |cos| of the angle between normals: monotone in the angle, blind
     // to orientation.

@@ -4,13 +4,11 @@
 #include <sstream>
 
 #include "energy/geman_mcclure.h"
+#include "energy/plane_projection.h"
 #include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
 namespace {
-
-// Planes whose normal part is shorter than this (t_i is a unit-scale 4-vector) are no planes.
-constexpr double kMinNormalSquaredNorm = 1e-24;
 
 bool InUnitInterval(double x) { return x > 0.0 && x <= 1.0; }
 
@@ -94,12 +92,10 @@ void ProjectOntoTangentPlanes(const energy::Problem& problem, const energy::Vari
   normals->resize(n);
   for (int i = 0; i < n; ++i) {
     const energy::Point3& p = problem.points[i];
-    const Eigen::Vector3d normal = v.t.row(i).head<3>().transpose();
-    const double normal_squared = normal.squaredNorm();
-    if (normal_squared > kMinNormalSquaredNorm) {
-      const double offset = normal.dot(p) + v.t(i, 3);  // t_i^T q_i
-      (*points)[i] = problem.frame.ToInput(p - normal * (offset / normal_squared));
-      (*normals)[i] = normal / std::sqrt(normal_squared);
+    energy::Point3 projected;
+    if (energy::ProjectOntoPlane(p, v.t.row(i).transpose(), &projected)) {
+      (*points)[i] = problem.frame.ToInput(projected);
+      (*normals)[i] = v.t.row(i).head<3>().transpose().normalized();
     } else {
       (*points)[i] = problem.frame.ToInput(p);
       (*normals)[i].setZero();

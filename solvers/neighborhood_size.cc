@@ -47,10 +47,7 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   const double k = probe_options.k;
   NeighborhoodSize size;
   size.noise_sigma = RobustFittingResidualScale(probe, planes) * std::sqrt((k + 1) / (k - 2));
-  std::vector<double> alpha = probe.alpha;
-  const auto middle = alpha.begin() + alpha.size() / 2;
-  std::nth_element(alpha.begin(), middle, alpha.end());
-  size.spacing = std::sqrt(2.0 * M_PI * *middle / k);
+  size.spacing = std::sqrt(2.0 * M_PI * energy::MedianAlpha(probe) / k);
   const double radius_in_spacings = options.radius_in_sigmas * size.noise_sigma / size.spacing;
   const double chosen = M_PI * radius_in_spacings * radius_in_spacings;
   const int largest = std::min<int>(options.max_k, static_cast<int>(points.size()) - 1);

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "energy/fitting_term.h"
+#include "energy/plane_projection.h"
 #include "energy/smoothness_term.h"
 
 namespace lpd::solvers {
@@ -57,22 +59,23 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
   return 1.4826 * *middle;
 }
 
+double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,
+                      double noise_sigmas) {
+  const double scale = noise_sigmas * RobustFittingResidualScale(problem, v);
+  return std::max(scale * scale, std::numeric_limits<double>::min());
+}
+
 double RmsProjectedPointChange(const energy::Problem& problem, const energy::PlaneField& old_t,
                                const energy::PlaneField& new_t, int num_threads) {
   const int n = problem.num_points();
   if (n == 0) return 0.0;
-  auto project = [&](const energy::PlaneField& t, int i, Eigen::Vector3d* projected) {
-    const Eigen::Vector3d normal = t.row(i).head<3>().transpose();
-    const double squared = normal.squaredNorm();
-    if (!(squared > 1e-24)) return false;
-    const energy::Point3& p = problem.points[i];
-    *projected = p - normal * ((normal.dot(p) + t(i, 3)) / squared);
-    return true;
+  auto project = [&](const energy::PlaneField& t, int i, energy::Point3* projected) {
+    return energy::ProjectOntoPlane(problem.points[i], t.row(i).transpose(), projected);
   };
   std::vector<double> squared_motion(n, 0.0);
 #pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
-    Eigen::Vector3d before, after;
+    energy::Point3 before, after;
     if (project(old_t, i, &before) && project(new_t, i, &after)) {
       squared_motion[i] = (after - before).squaredNorm();
     }

@@ -25,6 +25,11 @@ double MaxSquaredSmoothnessResidual(const energy::Problem& problem, const energy
 // low (about 0.9 sigma at sigma = spacing); the multiple c in mu_l = (c sigma)^2 absorbs it.
 double RobustFittingResidualScale(const energy::Problem& problem, const energy::Variables& v);
 
+// mu_l = (c sigma)^2 with sigma = RobustFittingResidualScale (the scale-aware mu_l), kept
+// positive for noise-free input, whose residuals vanish.
+double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,
+                      double noise_sigmas);
+
 // sqrt(mean_i |P_new(p_i) - P_old(p_i)|^2), P(p) the projection of p onto the plane t_i of
 // `old_t` or `new_t` (Sec. 3.4): how far one iteration moved the output points. Points whose
 // plane has no normal in either field count as unmoved. Deterministic in any thread count.

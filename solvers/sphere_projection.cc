@@ -4,21 +4,21 @@
 #include <cmath>
 #include <vector>
 
+#include "energy/plane_projection.h"
+
 namespace lpd::solvers {
 namespace {
 
-constexpr double kMinNormalSquaredNorm = 1e-24;
 // R_i over the farthest partner's distance: 3 keeps every partner's weight above 0.6, so the
 // fit averages over the whole neighbourhood (1.1: FANDISK 0.03 2.00e-3, 1.5: 1.96e-3, 3:
 // 1.94e-3 mean distance over the diagonal).
 constexpr double kRadiusFactor = 3.0;
 
 // p on the plane t (normalized frame); p itself when t has no normal.
-Eigen::Vector3d OnPlane(const Eigen::Vector3d& p, const Eigen::Vector4d& t) {
-  const Eigen::Vector3d normal = t.head<3>();
-  const double squared = normal.squaredNorm();
-  if (squared <= kMinNormalSquaredNorm) return p;
-  return p - normal * ((normal.dot(p) + t[3]) / squared);
+energy::Point3 OnPlane(const energy::Point3& p, const Eigen::Vector4d& t) {
+  energy::Point3 projected = p;
+  energy::ProjectOntoPlane(p, t, &projected);
+  return projected;
 }
 
 }  // namespace
@@ -35,7 +35,7 @@ void ProjectOntoLocalSpheres(const energy::Problem& problem, const energy::Varia
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector4d t = v.t.row(i).transpose();
     const double squared = t.head<3>().squaredNorm();
-    has_normal[i] = squared > kMinNormalSquaredNorm;
+    has_normal[i] = squared > energy::kMinPlaneNormalSquaredNorm;
     unit_normals[i] = has_normal[i] ? Eigen::Vector3d(t.head<3>() / std::sqrt(squared))
                                     : Eigen::Vector3d::Zero();
     anchors[i] = OnPlane(problem.points[i], t);

@@ -13,7 +13,7 @@
 namespace lpd::energy {
 namespace {
 
-double MedianAlpha(const Problem& problem) {
+double SortedMedianAlpha(const Problem& problem) {
   std::vector<double> alpha = problem.alpha;
   std::sort(alpha.begin(), alpha.end());
   return alpha[alpha.size() / 2];
@@ -32,7 +32,7 @@ TEST(DataScaledWeights, TheProblemGetsTheRequestedBalances) {
   for (int n : {2000, 8000}) {
     const Problem problem = SphereProblem(n);
     const EnergyParameters scaled = ScaleWeightsToData(problem, EnergyParameters(), weights);
-    EXPECT_NEAR(scaled.eta / ((problem.k() + 1) * MedianAlpha(problem)), 0.7, 1e-12) << n;
+    EXPECT_NEAR(scaled.eta / ((problem.k() + 1) * SortedMedianAlpha(problem)), 0.7, 1e-12) << n;
     EXPECT_NEAR(MedianSmoothnessToStitchingRatio(problem, scaled), 3.0, 1e-9) << n;
   }
 }

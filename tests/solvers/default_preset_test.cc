@@ -117,7 +117,9 @@ TEST(DefaultPreset, ASecondPassWithoutTheOutliersGivesTheOutlierFreeResult) {
   int removed_once = 0;
   for (size_t i = 0; i < one_pass.kept.size(); ++i) {
     removed_once += !one_pass.kept[i];
-    if (!one_pass.kept[i]) EXPECT_FALSE(two_passes.kept[i]) << "point " << i;
+    if (!one_pass.kept[i]) {
+      EXPECT_FALSE(two_passes.kept[i]) << "point " << i;
+    }
   }
   EXPECT_GT(two_passes.num_removed, removed_once);
   const double first = MeanDistance(with_outliers.shape, one_pass);
