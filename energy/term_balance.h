@@ -8,7 +8,7 @@
 // squared neighbour distance (beta_ij ~ alpha / (k |p_i - p_j|^2) sums to a few units). A
 // small rho keeps K close to its diagonal; a large one makes it close to a graph Laplacian,
 // which takes a multigrid solver more iterations. At a fixed eta, rho grows with the
-// sampling density (README, Performance).
+// sampling density (docs/performance.md).
 #ifndef LPD_ENERGY_TERM_BALANCE_H_
 #define LPD_ENERGY_TERM_BALANCE_H_
 

@@ -12,7 +12,7 @@
 # grows with n. With FIXED_BALANCE=1, eta is set for every n and k so that the balance stays
 # what eta = 5000 gives at the first n (it goes like 1 / eta; a one-iteration bench run
 # measures it at eta = 5000 first): the T system then keeps one conditioning at every n
-# (README, Performance, says why this isolates the solver).
+# (docs/performance.md says why this isolates the solver).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=("$@")

@@ -5,7 +5,7 @@
 // place: the slow error modes are smooth over the surface. A multigrid cycle removes them on
 // coarser levels (the paper used AMG too). Measured on the procedural CAD part at k = 20:
 // 10 CG iterations per outer iteration at 25K points and 21 at 1M, where Jacobi needs 94 and
-// 234 (README, Performance, explains what keeps the count growing).
+// 234 (docs/performance.md explains what keeps the count growing).
 //
 // Levels. An aggregate of level l + 1 is a run of `aggregate_size` consecutive nodes of level
 // l (solvers/aggregation.h). Solving in Morton order (energy/spatial_order.h) makes these runs

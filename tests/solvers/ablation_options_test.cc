@@ -192,7 +192,7 @@ TEST(AblationOptions, ConvexStartCoversEveryResidual) {
 // cubes at 1% noise, seeds 1-4, both runs to convergence: continuing mu_m (or both) ends
 // about 20% lower. Continuing mu_l alone ends within 1e-5 (relative) of the run without
 // it, sometimes above: at eta = 5000 the stitching term pins h_i to t_i and mu_l hardly
-// changes the minimizer (see README), so both runs stop at nearly the same state and only
+// changes the minimizer (docs/method.md), so both runs stop at nearly the same state and only
 // the last digits of where the 1% stopping test fires differ.
 TEST(AblationOptions, ContinuationNeverEndsAtAHigherEnergy) {
   const experiments::ProceduralShape cube =

@@ -142,7 +142,7 @@ TEST(CeresJointSolver, NoisyCubeAgainstTheAlternatingDriver) {
 
   // Both lower the same energy from the same start, and the stronger minimizer ends far
   // lower: the "within 1% or the alternating driver lower" does not hold for Eq. (5)
-  // at the paper's weights (README, "The energy's minimum is not the denoised surface").
+  // at the paper's weights (docs/method.md, "The joint solve minimizes the same default objective").
   const double alternating_energy = alternating_summary.final_energy.total();
   const double joint_energy = joint_summary.final_energy.total();
   EXPECT_LT(alternating_energy, joint_summary.initial_energy.total());
