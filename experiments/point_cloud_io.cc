@@ -23,9 +23,20 @@ using energy::PointList;
   throw std::runtime_error(path + ": " + reason);
 }
 
+// Opens `path` past a UTF-8 byte-order mark (which Windows editors write); UTF-16 text is
+// refused by name rather than as a malformed first line.
 std::ifstream OpenForReading(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+  char head[3] = {0, 0, 0};
+  in.read(head, 3);
+  const std::string start(head, static_cast<size_t>(in.gcount()));
+  in.clear();
+  if (start == "\xEF\xBB\xBF") return in;
+  if (start.rfind("\xFF\xFE", 0) == 0 || start.rfind("\xFE\xFF", 0) == 0) {
+    Fail(path, 1, "UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
+  }
+  in.seekg(0);
   return in;
 }
 
@@ -55,23 +66,32 @@ bool IsBlankOrComment(const std::string& line) {
   return true;
 }
 
-PointList ReadXyz(const std::string& path) {
+// Columns 4-6 are read as normals when every line has them and they are unit vectors (as
+// "x y z nx ny nz" exports are); colours or other extra columns are ignored.
+PointCloud ReadXyz(const std::string& path) {
   std::ifstream in = OpenForReading(path);
-  PointList points;
+  PointCloud cloud;
+  bool normals_on_every_line = true;
   std::string line;
   long number = 0;
   while (std::getline(in, line)) {
     ++number;
     if (IsBlankOrComment(line)) continue;
-    Point3 p;
+    Point3 p, n;
     const char* rest = nullptr;
     if (!ParseThreeNumbers(line.c_str(), &p, &rest)) {
       Fail(path, number, "expected three numbers 'x y z', got '" + line.substr(0, 60) + "'");
     }
     CheckFinite(path, number, p);
-    points.push_back(p);
+    cloud.points.push_back(p);
+    if (normals_on_every_line) {
+      normals_on_every_line = ParseThreeNumbers(rest, &n) && n.allFinite() &&
+                              std::abs(n.norm() - 1.0) < 0.01;
+      if (normals_on_every_line) cloud.normals.push_back(n);
+    }
   }
-  return points;
+  if (!normals_on_every_line) cloud.normals.clear();
+  return cloud;
 }
 
 PointList ReadObj(const std::string& path) {
@@ -188,6 +208,43 @@ double ReadBinaryValue(std::istream& in, const std::string& type, bool swap) {
   return x;
 }
 
+// The fewest bytes one item of `element` takes: its scalars and list counts in binary, a
+// digit and a separator per scalar or list count in ascii (lists may be empty).
+uint64_t SmallestItemBytes(const PlyElement& element, PlyFormat format) {
+  uint64_t bytes = 0;
+  for (const PlyProperty& property : element.properties) {
+    if (format == PlyFormat::kAscii) {
+      bytes += 2;
+    } else {
+      bytes += PlyTypeSize(property.count_type.empty() ? property.type : property.count_type);
+    }
+  }
+  return std::max<uint64_t>(bytes, 1);
+}
+
+// Refuses a header whose element counts (up to the vertex element, the last one read) need
+// more bytes than the body has, before anything is allocated for them.
+void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
+                           const std::vector<PlyElement>& elements, std::ifstream* in) {
+  const std::streampos body_start = in->tellg();
+  in->seekg(0, std::ios::end);
+  const uint64_t body_bytes = static_cast<uint64_t>(in->tellg() - body_start);
+  in->seekg(body_start);
+  uint64_t needed = 0;
+  for (const PlyElement& element : elements) {
+    const uint64_t item = SmallestItemBytes(element, format);
+    const uint64_t available = body_bytes > needed ? body_bytes - needed : 0;
+    if (static_cast<uint64_t>(element.count) > available / item) {
+      Fail(path, 0, "the header declares " + std::to_string(element.count) + " '" +
+                        element.name + "' items but the remaining " +
+                        std::to_string(available) + " bytes hold at most " +
+                        std::to_string(available / item));
+    }
+    needed += static_cast<uint64_t>(element.count) * item;
+    if (element.name == "vertex") break;
+  }
+}
+
 // The vertex element as a PointCloud: x, y, z; nx, ny, nz as normals when all three exist;
 // every other scalar property as a named scalar.
 PointCloud ReadPly(const std::string& path) {
@@ -246,6 +303,7 @@ PointCloud ReadPly(const std::string& path) {
   }
   if (!header_done) Fail(path, number, "PLY header has no end_header");
   if (!has_format) Fail(path, number, "PLY header has no format line");
+  CheckPlyCountsFitBody(path, format, elements, &in);
 
   PointCloud cloud;
   PointList& points = cloud.points;
@@ -388,7 +446,7 @@ PointCloud ReadPointCloud(const std::string& path) {
   const std::string extension = FileExtension(path);
   PointCloud cloud;
   if (extension == "xyz" || extension == "txt" || extension == "pts") {
-    cloud.points = ReadXyz(path);
+    cloud = ReadXyz(path);
   } else if (extension == "ply") {
     cloud = ReadPly(path);
   } else if (extension == "off") {

@@ -1,7 +1,9 @@
 // lpd: reading and writing point clouds.
 //
-// Read: XYZ text (".xyz", ".txt", ".pts": the first three numbers of each line; '#' starts a
-// comment; extra columns are ignored), PLY (ascii, binary little or big endian; the x, y, z
+// Read: XYZ text (".xyz", ".txt", ".pts": the first three numbers of each line, separated by
+// spaces or tabs; '#' starts a comment; CRLF line ends and a UTF-8 byte-order mark are
+// accepted; columns 4-6 become normals when they are unit vectors on every line, other extra
+// columns are ignored), PLY (ascii, binary little or big endian; the x, y, z
 // properties of the "vertex" element), OFF and OBJ (vertices only). Every reader rejects
 // malformed lines, NaN and infinite coordinates with "FILE:LINE: reason", and empty files.
 // Write: PLY (binary little endian, with normals and per-point scalar properties that
@@ -29,8 +31,10 @@ struct PointCloud {
   const std::vector<float>* FindScalar(const std::string& name) const;
 };
 
-// Throws std::runtime_error with a one-line reason on any problem. PLY files also give their
-// normals (nx, ny, nz) and other per-vertex scalar properties; other formats give points only.
+// Throws std::runtime_error with a one-line reason on any problem, also when a PLY header
+// declares more items than its body can hold (nothing is allocated for them). PLY files also
+// give their normals (nx, ny, nz) and other per-vertex scalar properties, XYZ files their
+// normals as above; other formats give points only.
 PointCloud ReadPointCloud(const std::string& path);
 energy::PointList ReadPoints(const std::string& path);
 

@@ -25,6 +25,28 @@ TEST(Problem, NormalizedFrameHasUnitDiagonalAndZeroCentroid) {
   }
 }
 
+// Coordinates whose squares over- or underflow a double still normalize exactly.
+TEST(Problem, NormalizesExtremeCoordinateScales) {
+  for (const double scale : {1e200, 1e-200, 1e307}) {
+    PointList points = testing::NoisySphere(300, 0.02, 3);
+    const double reference = BoundingBoxDiagonal(points);
+    for (Point3& p : points) p *= scale;
+    EXPECT_NEAR(BoundingBoxDiagonal(points) / scale, reference, 1e-12 * reference) << scale;
+    ProblemOptions options;
+    options.k = 8;
+    const Problem problem = BuildProblem(points, options);
+    EXPECT_NEAR(BoundingBoxDiagonal(problem.points), 1.0, 1e-12) << scale;
+    EXPECT_LT((problem.frame.ToInput(problem.points[7]) - points[7]).stableNorm(), 1e-12 * scale);
+  }
+  const PointList beyond = {{-1e308, 0, 0}, {1e308, 0, 0}, {0, 1, 0}};
+  try {
+    ComputeNormalizingFrame(beyond);
+    ADD_FAILURE() << "an extent beyond the largest double was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("overflows"), std::string::npos) << error.what();
+  }
+}
+
 TEST(Problem, WeightsFollowTheirDefinitions) {
   const PointList points = testing::NoisySphere(300, 0.05, 2);
   ProblemOptions options;

@@ -93,7 +93,14 @@ TEST_F(PointCloudIoTest, BadFilesGiveOneLineErrorsNamingTheProblem) {
   EXPECT_NE(ReadError(Write("t.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 5\n"
                                      "property float x\nproperty float y\nproperty float z\n"
                                      "end_header\nabc"))
-                .find("binary data ends"),
+                .find("declares 5 'vertex' items but the remaining 3 bytes hold at most 0"),
+            std::string::npos);
+  // A list longer than the body: the counts fit, the data does not.
+  const std::string list_header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uchar float x\n"
+      "property float y\nproperty float z\nend_header\n";
+  EXPECT_NE(ReadError(Write("list.ply", list_header + '\xff' + std::string(12, '\0')))
+                .find("binary data ends inside element 'vertex'"),
             std::string::npos);
   EXPECT_NE(ReadError(Write("n.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
                                      "property float x\nproperty float y\nend_header\n1 2\n"))
@@ -104,6 +111,40 @@ TEST_F(PointCloudIoTest, BadFilesGiveOneLineErrorsNamingTheProblem) {
   for (const char* name : {"missing.xyz", "empty.xyz", "bad.xyz", "nan.xyz", "t.ply"}) {
     const std::string message = ReadError((directory_ / name).string());
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST_F(PointCloudIoTest, TextFromOtherToolsReadsTheSame) {
+  const energy::PointList expected = {{1, 2, 3}, {-4.5, 5e-3, 6e10}};
+  const std::string plain = "1 2 3\n-4.5 0.005 60000000000\n";
+  EXPECT_EQ(ReadPoints(Write("plain.xyz", plain)), expected);
+  EXPECT_EQ(ReadPoints(Write("bom.xyz", "\xEF\xBB\xBF" + plain)), expected);
+  EXPECT_EQ(ReadPoints(Write("crlf.xyz", "1 2 3\r\n-4.5 0.005 60000000000\r\n")), expected);
+  EXPECT_EQ(ReadPoints(Write("tabs.xyz", "# x\ty\tz\r\n1\t2\t3\n\t-4.5E0  5.0e-3\t6e+10 # a\n")),
+            expected);
+  EXPECT_EQ(ReadPoints(Write("bom.off", "\xEF\xBB\xBFOFF\r\n2 0 0\r\n1 2 3\r\n-4.5 5e-3 6e10\r\n")),
+            expected);
+  EXPECT_EQ(ReadPoints(Write("bom.ply", "\xEF\xBB\xBFply\r\nformat ascii 1.0\r\nelement vertex 2\r\n"
+                                        "property double x\r\nproperty double y\r\nproperty "
+                                        "double z\r\nend_header\r\n1 2 3\r\n-4.5 5e-3 6e10\r\n")),
+            expected);
+  EXPECT_NE(ReadError(Write("utf16.xyz", std::string("\xFF\xFE" "1\0 \0" "2\0", 8)))
+                .find("utf16.xyz:1: UTF-16 text is not supported"),
+            std::string::npos);
+}
+
+TEST_F(PointCloudIoTest, XyzExtraColumnsAreNormalsOnlyWhenUnit) {
+  const PointCloud with_normals =
+      ReadPointCloud(Write("n.xyz", "1 2 3 0 0 1\n4 5 6 0.6 0.8 0\n"));
+  ASSERT_EQ(with_normals.normals.size(), 2u);
+  EXPECT_EQ(with_normals.normals[1], energy::Point3(0.6, 0.8, 0));
+  EXPECT_EQ(with_normals.points[1], energy::Point3(4, 5, 6));
+  // Colours, a missing column on one line, or a non-unit triple: points only.
+  for (const char* text : {"1 2 3 255 0 0\n4 5 6 0 255 0\n", "1 2 3 0 0 1\n4 5 6\n",
+                           "1 2 3 0 0 1\n4 5 6 0 0 2\n"}) {
+    const PointCloud cloud = ReadPointCloud(Write("c.xyz", text));
+    EXPECT_EQ(cloud.points.size(), 2u);
+    EXPECT_TRUE(cloud.normals.empty()) << text;
   }
 }
 
