@@ -2,8 +2,8 @@
 //
 // Data goes to a temporary file beside the target; Commit() renames it into place. If the
 // object is destroyed without Commit() (an error, an exception), the temporary file is
-// removed, so a failed run never leaves a half-written output. An existing target is
-// refused unless `overwrite` is set.
+// removed, so a failed run never leaves a half-written output; an interrupted one neither
+// (interruption.h). An existing target is refused unless `overwrite` is set.
 #ifndef LPD_EXPERIMENTS_ATOMIC_OUTPUT_FILE_H_
 #define LPD_EXPERIMENTS_ATOMIC_OUTPUT_FILE_H_
 
@@ -12,8 +12,9 @@
 
 namespace lpd::experiments {
 
-// Throws std::runtime_error if `path` exists and !overwrite. Commands call it before their
-// work, so that a refused output costs nothing; AtomicOutputFile checks again.
+// Throws std::runtime_error if `path` exists and !overwrite, exists and is not a regular
+// file, or its directory is missing or not writable. Commands call it before their work, so
+// that a refused output costs nothing; AtomicOutputFile checks again.
 void RefuseExistingOutput(const std::string& path, bool overwrite);
 
 class AtomicOutputFile {
@@ -33,6 +34,7 @@ class AtomicOutputFile {
   std::string temporary_path_;
   std::ofstream stream_;
   bool committed_ = false;
+  int slot_ = -1;  // in the interruption module's list of temporary files
 };
 
 }  // namespace lpd::experiments

@@ -13,6 +13,7 @@
 #include "experiments/commands.h"
 #include "experiments/denoise_flags.h"
 #include "experiments/denoise_state_file.h"
+#include "experiments/interruption.h"
 #include "experiments/noise.h"
 #include "experiments/point_cloud_io.h"
 #include "experiments/shape_catalog.h"
@@ -63,10 +64,12 @@ double MeanDistance(const ProceduralShape& shape, const energy::PointList& point
   return sum / static_cast<double>(points.size());
 }
 
-// One line per iteration: the energy per term, then the times of Alg. 1's two steps or, for
-// the joint solve, the elapsed time and the linear solver's iterations.
-solvers::IterationCallback ProgressPrinter(solvers::Solver solver) {
-  return [solver](const solvers::IterationRecord& record) {
+// One line per iteration (unless `quiet`): the energy per term, then the times of Alg. 1's
+// two steps or, for the joint solve, the elapsed time and the linear solver's iterations.
+// Returns false, and so stops the solver, once a signal has arrived.
+solvers::IterationCallback ProgressPrinter(solvers::Solver solver, bool quiet) {
+  return [solver, quiet](const solvers::IterationRecord& record) {
+    if (quiet) return !InterruptionRequested();
     std::fprintf(stderr, "iter %2d  energy %.6e (fit %.3e, smooth %.3e, stitch %.3e)  ",
                  record.iteration, record.energy.total(), record.energy.fitting,
                  record.energy.smoothness, record.energy.stitching);
@@ -78,7 +81,7 @@ solvers::IterationCallback ProgressPrinter(solvers::Solver solver) {
       std::fprintf(stderr, "elapsed %.3f s  linear iterations %d\n", record.elapsed_seconds,
                    record.cg_iterations);
     }
-    return true;
+    return !InterruptionRequested();  // a signal stops the run after this iteration
   };
 }
 
@@ -194,9 +197,10 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
                                     input_normals.empty() ? nullptr : &input_normals);
   }
 
-  const solvers::IterationCallback progress =
-      FLAGS_quiet ? solvers::IterationCallback() : ProgressPrinter(options.solver);
+  const solvers::IterationCallback progress = ProgressPrinter(options.solver, FLAGS_quiet);
+  ThrowIfInterrupted();
   solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state, progress);
+  ThrowIfInterrupted();
   if (!FLAGS_save_state.empty()) {
     WriteDenoiseState(FLAGS_save_state, state, options, FLAGS_overwrite);
   }
@@ -206,6 +210,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     result = solvers::RerunWithoutOutliers(input_points, options, std::move(result), progress,
                                            input_normals.empty() ? nullptr : &input_normals);
   }
+  ThrowIfInterrupted();
   result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
 

@@ -93,8 +93,12 @@ double ParseNumber(const std::string& name, const std::string& text) {
 
 int ParseInteger(const std::string& name, const std::string& text) {
   const double value = ParseNumber(name, text);
-  if (value != std::floor(value) || std::abs(value) > 1e9) {
+  if (value != std::floor(value)) {
     throw std::invalid_argument("parameter " + name + ": '" + text + "' is not an integer");
+  }
+  if (std::abs(value) > 1e9) {
+    throw std::invalid_argument("parameter " + name + ": " + text +
+                                " is out of range (at most 1e9 in magnitude)");
   }
   return static_cast<int>(value);
 }

@@ -1,6 +1,7 @@
 // lpd: command-line entry point. `lpd COMMAND [ARGS] [--flags]`; `lpd COMMAND --help`.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <map>
@@ -10,8 +11,11 @@
 #include <gflags/gflags.h>
 
 #include "experiments/commands.h"
+#include "experiments/interruption.h"
 
 namespace {
+
+constexpr int kMaxThreads = 1024;
 
 struct Command {
   int (*run)(const std::vector<std::string>&);
@@ -131,8 +135,21 @@ int main(int argc, char** argv) {
   char** pointer = args.data();
   gflags::ParseCommandLineNonHelpFlags(&count, &pointer, /*remove_flags=*/true);
   std::vector<std::string> positional(pointer + 1, pointer + count);
+  // Every command's worker threads, bounded before any is started (OpenMP crashes creating
+  // 100000 of them; 1024 still runs, slowly).
+  std::string threads;
+  if (gflags::GetCommandLineOption("threads", &threads) &&
+      !(std::atoi(threads.c_str()) >= 1 && std::atoi(threads.c_str()) <= kMaxThreads)) {
+    std::fprintf(stderr, "lpd %s: error: --threads must be in [1, %d], got %s\n", argv[1],
+                 kMaxThreads, threads.c_str());
+    return 2;
+  }
+  lpd::experiments::InstallInterruptionHandlers();
   try {
     return command.run(positional);
+  } catch (const lpd::experiments::Interrupted& interrupted) {
+    std::fprintf(stderr, "lpd %s: %s\n", argv[1], interrupted.what());
+    return 128 + interrupted.signal();
   } catch (const std::exception& error) {
     std::fprintf(stderr, "lpd %s: error: %s\n", argv[1], error.what());
     return 1;

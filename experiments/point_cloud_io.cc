@@ -23,21 +23,18 @@ using energy::PointList;
   throw std::runtime_error(path + ": " + reason);
 }
 
-// Opens `path` past a UTF-8 byte-order mark (which Windows editors write); UTF-16 text is
+// Moves `in` past a UTF-8 byte-order mark (which Windows editors write); UTF-16 text is
 // refused by name rather than as a malformed first line.
-std::ifstream OpenForReading(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+void SkipByteOrderMark(const std::string& path, std::istream& in) {
   char head[3] = {0, 0, 0};
   in.read(head, 3);
   const std::string start(head, static_cast<size_t>(in.gcount()));
   in.clear();
-  if (start == "\xEF\xBB\xBF") return in;
+  if (start == "\xEF\xBB\xBF") return;
   if (start.rfind("\xFF\xFE", 0) == 0 || start.rfind("\xFE\xFF", 0) == 0) {
     Fail(path, 1, "UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
   }
   in.seekg(0);
-  return in;
 }
 
 // Parses the first three numbers of `text` into `p`; false if there are fewer than three.
@@ -68,8 +65,7 @@ bool IsBlankOrComment(const std::string& line) {
 
 // Columns 4-6 are read as normals when every line has them and they are unit vectors (as
 // "x y z nx ny nz" exports are); colours or other extra columns are ignored.
-PointCloud ReadXyz(const std::string& path) {
-  std::ifstream in = OpenForReading(path);
+PointCloud ReadXyz(const std::string& path, std::istream& in) {
   PointCloud cloud;
   bool normals_on_every_line = true;
   std::string line;
@@ -94,8 +90,7 @@ PointCloud ReadXyz(const std::string& path) {
   return cloud;
 }
 
-PointList ReadObj(const std::string& path) {
-  std::ifstream in = OpenForReading(path);
+PointList ReadObj(const std::string& path, std::istream& in) {
   PointList points;
   std::string line;
   long number = 0;
@@ -121,8 +116,7 @@ bool NextContentLine(std::istream& in, std::string* line, long* number) {
   return false;
 }
 
-PointList ReadOff(const std::string& path) {
-  std::ifstream in = OpenForReading(path);
+PointList ReadOff(const std::string& path, std::istream& in) {
   std::string line;
   long number = 0;
   if (!NextContentLine(in, &line, &number)) Fail(path, 0, "empty file");
@@ -225,7 +219,7 @@ uint64_t SmallestItemBytes(const PlyElement& element, PlyFormat format) {
 // Refuses a header whose element counts (up to the vertex element, the last one read) need
 // more bytes than the body has, before anything is allocated for them.
 void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
-                           const std::vector<PlyElement>& elements, std::ifstream* in) {
+                           const std::vector<PlyElement>& elements, std::istream* in) {
   const std::streampos body_start = in->tellg();
   in->seekg(0, std::ios::end);
   const uint64_t body_bytes = static_cast<uint64_t>(in->tellg() - body_start);
@@ -247,8 +241,7 @@ void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
 
 // The vertex element as a PointCloud: x, y, z; nx, ny, nz as normals when all three exist;
 // every other scalar property as a named scalar.
-PointCloud ReadPly(const std::string& path) {
-  std::ifstream in = OpenForReading(path);
+PointCloud ReadPly(const std::string& path, std::istream& in) {
   std::string line;
   long number = 0;
   if (!std::getline(in, line) || line.rfind("ply", 0) != 0) {
@@ -443,21 +436,28 @@ std::string FileExtension(const std::string& path) {
 }
 
 PointCloud ReadPointCloud(const std::string& path) {
-  const std::string extension = FileExtension(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+  return ReadPointCloud(in, FileExtension(path), path);
+}
+
+PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
+                          const std::string& name) {
+  SkipByteOrderMark(name, in);
   PointCloud cloud;
   if (extension == "xyz" || extension == "txt" || extension == "pts") {
-    cloud = ReadXyz(path);
+    cloud = ReadXyz(name, in);
   } else if (extension == "ply") {
-    cloud = ReadPly(path);
+    cloud = ReadPly(name, in);
   } else if (extension == "off") {
-    cloud.points = ReadOff(path);
+    cloud.points = ReadOff(name, in);
   } else if (extension == "obj") {
-    cloud.points = ReadObj(path);
+    cloud.points = ReadObj(name, in);
   } else {
-    Fail(path, 0, "unknown point-cloud format '." + extension +
+    Fail(name, 0, "unknown point-cloud format '." + extension +
                       "' (expected .xyz, .txt, .pts, .ply, .off or .obj)");
   }
-  if (cloud.points.empty()) Fail(path, 0, "the file contains no points");
+  if (cloud.points.empty()) Fail(name, 0, "the file contains no points");
   return cloud;
 }
 

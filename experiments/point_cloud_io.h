@@ -12,6 +12,7 @@
 #ifndef LPD_EXPERIMENTS_POINT_CLOUD_IO_H_
 #define LPD_EXPERIMENTS_POINT_CLOUD_IO_H_
 
+#include <istream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +37,10 @@ struct PointCloud {
 // give their normals (nx, ny, nz) and other per-vertex scalar properties, XYZ files their
 // normals as above; other formats give points only.
 PointCloud ReadPointCloud(const std::string& path);
+// The same from a stream holding a file of format `extension` ("xyz", "ply", ...); `name`
+// stands for the file in messages. `in` must be seekable (a file or a string stream).
+PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
+                          const std::string& name);
 energy::PointList ReadPoints(const std::string& path);
 
 // Writes `cloud` to `path` (".ply" or ".xyz"/".txt"); throws std::runtime_error on failure.

@@ -60,6 +60,10 @@ double Number(const std::string& path, const YAML::Node& node, const std::string
   return value;
 }
 
+// The most cells one sweep runs (a mistyped range would otherwise expand to millions of
+// cells and gigabytes before the first one runs); a larger study is split into configs.
+constexpr double kMaxSweepCells = 100000;
+
 // Expands a mapping whose values are scalars or lists of scalars into the cartesian product
 // of its lists (a grid); the key `skip_key` is left out.
 std::vector<ParameterSet> ExpandGrid(const std::string& path, const YAML::Node& map,
@@ -78,6 +82,11 @@ std::vector<ParameterSet> ExpandGrid(const std::string& path, const YAML::Node& 
       }
     } else {
       Fail(path, Line(item.second), "'" + key + "' must be a value or a non-empty list");
+    }
+    if (static_cast<double>(grid.size()) * values.size() > kMaxSweepCells) {
+      Fail(path, Line(item.second),
+           "the grid reaches more than " + std::to_string(static_cast<int>(kMaxSweepCells)) +
+               " points at '" + key + "'; split the sweep into several configs");
     }
     std::vector<ParameterSet> expanded;
     for (const ParameterSet& point : grid) {
@@ -315,6 +324,16 @@ SweepConfig LoadSweepConfig(const std::string& path) {
       }
       config.methods.push_back(config_point);
     }
+  }
+  double cells = 0.0;
+  for (const DatasetConfig& dataset : config.datasets) {
+    cells += static_cast<double>(config.repetitions) * config.methods.size() *
+             (dataset.file.empty() ? config.noise.size() : 1);
+  }
+  if (cells > kMaxSweepCells) {
+    Fail(path, 1, "the sweep has " + std::to_string(static_cast<long long>(cells)) +
+                      " cells, more than " + std::to_string(static_cast<int>(kMaxSweepCells)) +
+                      "; split it into several configs");
   }
   return config;
 }

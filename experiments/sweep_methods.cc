@@ -7,6 +7,7 @@
 
 #include "experiments/cgal_baselines.h"
 #include "experiments/denoise_parameters.h"
+#include "experiments/interruption.h"
 #include "solvers/presets.h"
 #include "experiments/method_parameters.h"
 #include "solvers/denoise_point_set.h"
@@ -58,7 +59,9 @@ MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
   solvers::DenoiseOptions options = DenoiseOptionsOf(method, solver);
   options.minimizer.num_threads = num_threads;
   options.minimizer.trace_blocks = false;
-  const solvers::DenoiseResult result = solvers::DenoisePointSet(input, options);
+  const solvers::DenoiseResult result = solvers::DenoisePointSet(
+      input, options, [](const solvers::IterationRecord&) { return !InterruptionRequested(); });
+  ThrowIfInterrupted();  // a run stopped by a signal is no result
   MethodRun run;
   for (size_t i = 0; i < input.size(); ++i) {
     if (result.kept[i]) run.output.push_back(result.projected[i]);

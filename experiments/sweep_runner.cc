@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "experiments/ground_truth_source.h"
+#include "experiments/interruption.h"
 #include "experiments/machine_info.h"
 #include "experiments/metrics.h"
 #include "experiments/point_cloud_io.h"
@@ -365,7 +366,7 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
   std::atomic<size_t> next{0};
   std::atomic<int> run_count{0}, failed{0};
   const auto work = [&]() {
-    for (size_t p = next++; p < pending.size(); p = next++) {
+    for (size_t p = next++; p < pending.size() && !InterruptionRequested(); p = next++) {
       const SweepCell& cell = *pending[p];
       try {
         const ResultRecord record =
@@ -374,6 +375,8 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
         const int done = ++run_count;
         report("[" + std::to_string(done) + "/" + std::to_string(pending.size()) + "] " +
                Brief(record));
+      } catch (const Interrupted&) {
+        return;  // the cell is left to the next run
       } catch (const std::exception& error) {
         ++failed;
         report("cell failed (" + cell.key + "): " + error.what());
@@ -384,6 +387,7 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
   for (int w = 1; w < workers; ++w) pool.emplace_back(work);
   work();
   for (std::thread& thread : pool) thread.join();
+  ThrowIfInterrupted();
   summary.num_run = run_count;
   summary.num_failed = failed;
   summary.seconds =

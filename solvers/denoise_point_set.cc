@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <unistd.h>
+
 #include "energy/spatial_order.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
@@ -27,6 +29,25 @@ Values ToProblemOrder(const Values& values, const std::vector<int>& order) {
   Values ordered(order.size());
   for (size_t r = 0; r < order.size(); ++r) ordered[r] = values[order[r]];
   return ordered;
+}
+
+// Peak memory of a run on n points at k neighbours, from the figures measured on cad_part
+// (docs/performance.md): 1.39 KB per point at k = 20 and 4.9 KB at k = 91.
+double EstimatedPeakBytes(double n, double k) { return n * (400.0 + 49.4 * k); }
+
+// Refuses a run that cannot fit in this machine's physical memory before allocating it.
+void CheckFitsInMemory(int n, int k) {
+  const double available =
+      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  const double needed = EstimatedPeakBytes(n, k);
+  if (available > 0.0 && needed > available) {
+    char message[256];
+    std::snprintf(message, sizeof(message),
+                  "k = %d on %d points needs about %.1f GB, more than this machine's %.1f GB "
+                  "(give a smaller --k or --max_k)",
+                  k, n, needed / 1e9, available / 1e9);
+    throw std::invalid_argument(message);
+  }
 }
 
 }  // namespace
@@ -82,6 +103,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
     state.neighborhood = ChooseNeighborhoodSize(ordered_points, options.neighborhood, threads);
     problem_options.k = state.neighborhood.k;
   }
+  CheckFitsInMemory(static_cast<int>(points.size()), problem_options.k);
   state.problem = energy::BuildProblem(ordered_points, problem_options, threads);
   state.neighborhood.k = state.problem.k();
   state.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();

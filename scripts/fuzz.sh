@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Fuzzes every point-cloud reader with libFuzzer (clang, AddressSanitizer + UBSan), starting
+# from the seed corpus in tests/fuzz/corpus/FORMAT. New interesting inputs go to
+# build-fuzz/corpus/FORMAT, crashes to build-fuzz/crashes/FORMAT; copy a crash into
+# tests/fuzz/corpus/FORMAT once fixed, so the ctest replay keeps it as a regression test.
+# Usage: scripts/fuzz.sh [SECONDS_PER_READER=600] [FORMAT...]   (default: xyz ply off obj)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-600}
+shift || true
+formats=("$@")
+[ ${#formats[@]} -gt 0 ] || formats=(xyz ply off obj)
+command -v clang++ >/dev/null || { echo "fuzz.sh: needs clang++ (apt-get install clang)" >&2; exit 1; }
+[ -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ] ||
+  echo "fuzz.sh: libFuzzer may be missing (apt-get install libfuzzer-14-dev)" >&2
+CXX=clang++ CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLPD_FUZZ=ON \
+  >/dev/null
+targets=()
+for format in "${formats[@]}"; do targets+=(--target "fuzz_${format}_reader"); done
+cmake --build build-fuzz -j "$(nproc)" "${targets[@]}" >/dev/null
+for format in "${formats[@]}"; do
+  mkdir -p "build-fuzz/corpus/$format" "build-fuzz/crashes/$format"
+  echo "== $format: $seconds s"
+  ./build-fuzz/tests/fuzz/fuzz_${format}_reader "build-fuzz/corpus/$format" \
+    "tests/fuzz/corpus/$format" -max_total_time="$seconds" -rss_limit_mb=2048 \
+    -max_len=4096 -print_final_stats=1 -artifact_prefix="build-fuzz/crashes/$format/" \
+    2>&1 | grep -E "^#[0-9]+.*DONE|stat::number_of_executed_units|stat::new_units_added|cov:|ERROR|SUMMARY" |
+    tail -6
+done
