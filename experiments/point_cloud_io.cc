@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -35,6 +36,42 @@ void SkipByteOrderMark(const std::string& path, std::istream& in) {
     Fail(path, 1, "UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
   }
   in.seekg(0);
+}
+
+// Longer lines are refused rather than buffered: a text file has short lines, and a device
+// or binary file read as text (/dev/zero, say) would otherwise fill the memory.
+constexpr size_t kMaxLineBytes = 1 << 16;
+
+// std::getline with that bound; `number` is the number of the line read.
+bool ReadLine(const std::string& path, std::istream& in, std::string* line, long number) {
+  line->clear();
+  std::streambuf* buffer = in.rdbuf();
+  for (;;) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      if (line->empty()) {
+        in.setstate(std::ios::eofbit | std::ios::failbit);
+        return false;
+      }
+      in.setstate(std::ios::eofbit);
+      return true;
+    }
+    if (c == '\n') return true;
+    if (line->size() == kMaxLineBytes) {
+      Fail(path, number, "line longer than " + std::to_string(kMaxLineBytes) +
+                             " bytes (not a text point file?)");
+    }
+    line->push_back(static_cast<char>(c));
+  }
+}
+
+// The start of `line` for a message, with unprintable bytes shown as '?'.
+std::string Excerpt(const std::string& line) {
+  std::string excerpt = line.substr(0, 60);
+  for (char& c : excerpt) {
+    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+  }
+  return excerpt;
 }
 
 // Parses the first three numbers of `text` into `p`; false if there are fewer than three.
@@ -70,13 +107,13 @@ PointCloud ReadXyz(const std::string& path, std::istream& in) {
   bool normals_on_every_line = true;
   std::string line;
   long number = 0;
-  while (std::getline(in, line)) {
+  while (ReadLine(path, in, &line, number + 1)) {
     ++number;
     if (IsBlankOrComment(line)) continue;
     Point3 p, n;
     const char* rest = nullptr;
     if (!ParseThreeNumbers(line.c_str(), &p, &rest)) {
-      Fail(path, number, "expected three numbers 'x y z', got '" + line.substr(0, 60) + "'");
+      Fail(path, number, "expected three numbers 'x y z', got '" + Excerpt(line) + "'");
     }
     CheckFinite(path, number, p);
     cloud.points.push_back(p);
@@ -94,7 +131,7 @@ PointList ReadObj(const std::string& path, std::istream& in) {
   PointList points;
   std::string line;
   long number = 0;
-  while (std::getline(in, line)) {
+  while (ReadLine(path, in, &line, number + 1)) {
     ++number;
     if (line.size() < 2 || line[0] != 'v' || !std::isspace(static_cast<unsigned char>(line[1]))) {
       continue;
@@ -108,8 +145,9 @@ PointList ReadObj(const std::string& path, std::istream& in) {
 }
 
 // Reads the next line that is not blank or a comment; false at end of file.
-bool NextContentLine(std::istream& in, std::string* line, long* number) {
-  while (std::getline(in, *line)) {
+bool NextContentLine(const std::string& path, std::istream& in, std::string* line,
+                     long* number) {
+  while (ReadLine(path, in, line, *number + 1)) {
     ++*number;
     if (!IsBlankOrComment(*line)) return true;
   }
@@ -119,7 +157,7 @@ bool NextContentLine(std::istream& in, std::string* line, long* number) {
 PointList ReadOff(const std::string& path, std::istream& in) {
   std::string line;
   long number = 0;
-  if (!NextContentLine(in, &line, &number)) Fail(path, 0, "empty file");
+  if (!NextContentLine(path, in, &line, &number)) Fail(path, 0, "empty file");
   std::istringstream header(line);
   std::string magic;
   header >> magic;
@@ -128,7 +166,7 @@ PointList ReadOff(const std::string& path, std::istream& in) {
   }
   long num_vertices = -1;
   if (!(header >> num_vertices)) {
-    if (!NextContentLine(in, &line, &number)) Fail(path, number, "missing vertex count");
+    if (!NextContentLine(path, in, &line, &number)) Fail(path, number, "missing vertex count");
     std::istringstream counts(line);
     counts >> num_vertices;
   }
@@ -136,7 +174,7 @@ PointList ReadOff(const std::string& path, std::istream& in) {
   PointList points;
   points.reserve(num_vertices);
   for (long v = 0; v < num_vertices; ++v) {
-    if (!NextContentLine(in, &line, &number)) {
+    if (!NextContentLine(path, in, &line, &number)) {
       Fail(path, number, "file ends after " + std::to_string(v) + " of " +
                              std::to_string(num_vertices) + " vertices");
     }
@@ -222,8 +260,11 @@ void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
                            const std::vector<PlyElement>& elements, std::istream* in) {
   const std::streampos body_start = in->tellg();
   in->seekg(0, std::ios::end);
-  const uint64_t body_bytes = static_cast<uint64_t>(in->tellg() - body_start);
+  const std::streampos end = in->tellg();
+  in->clear();
   in->seekg(body_start);
+  if (body_start < 0 || end < body_start) return;  // not seekable: the reads check as they go
+  const uint64_t body_bytes = static_cast<uint64_t>(end - body_start);
   uint64_t needed = 0;
   for (const PlyElement& element : elements) {
     const uint64_t item = SmallestItemBytes(element, format);
@@ -244,7 +285,7 @@ void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
 PointCloud ReadPly(const std::string& path, std::istream& in) {
   std::string line;
   long number = 0;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) {
+  if (!ReadLine(path, in, &line, 1) || line.rfind("ply", 0) != 0) {
     Fail(path, 1, "not a PLY file (missing 'ply' magic)");
   }
   ++number;
@@ -252,7 +293,7 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
   bool has_format = false;
   std::vector<PlyElement> elements;
   bool header_done = false;
-  while (std::getline(in, line)) {
+  while (ReadLine(path, in, &line, number + 1)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream tokens(line);
@@ -283,8 +324,9 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
       } else {
         property.type = type;
       }
-      if (!(tokens >> property.name) || PlyTypeSize(property.type) == 0) {
-        Fail(path, number, "malformed property line");
+      if (!(tokens >> property.name)) Fail(path, number, "malformed property line");
+      if (PlyTypeSize(property.type) == 0) {
+        Fail(path, number, "unknown property type '" + Excerpt(property.type) + "'");
       }
       elements.back().properties.push_back(property);
     } else if (keyword == "end_header") {
@@ -330,7 +372,7 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
     std::vector<double> values(element.properties.size());
     for (long item = 0; item < element.count; ++item) {
       if (format == PlyFormat::kAscii) {
-        if (!std::getline(in, line)) {
+        if (!ReadLine(path, in, &line, number + 1)) {
           Fail(path, number, "file ends inside element '" + element.name + "'");
         }
         ++number;
@@ -436,6 +478,9 @@ std::string FileExtension(const std::string& path) {
 }
 
 PointCloud ReadPointCloud(const std::string& path) {
+  if (path.empty()) throw std::runtime_error("the input file name is empty");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) Fail(path, 0, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
   return ReadPointCloud(in, FileExtension(path), path);
