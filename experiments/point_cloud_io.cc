@@ -213,6 +213,11 @@ int PlyTypeSize(const std::string& type) {
   return 0;
 }
 
+bool PlyTypeIsInteger(const std::string& type) {
+  return PlyTypeSize(type) > 0 && type != "float" && type != "float32" && type != "double" &&
+         type != "float64";
+}
+
 bool HostIsLittleEndian() {
   const uint16_t probe = 1;
   uint8_t first;
@@ -320,7 +325,10 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
       tokens >> type;
       if (type == "list") {
         tokens >> property.count_type >> property.type;
-        if (PlyTypeSize(property.count_type) == 0) Fail(path, number, "bad list count type");
+        if (PlyTypeSize(property.count_type) == 0 || !PlyTypeIsInteger(property.count_type)) {
+          Fail(path, number, "list count type must be an integer type, got '" +
+                                 Excerpt(property.count_type) + "'");
+        }
       } else {
         property.type = type;
       }

@@ -24,6 +24,8 @@ for format in "${formats[@]}"; do
   ./build-fuzz/tests/fuzz/fuzz_${format}_reader "build-fuzz/corpus/$format" \
     "tests/fuzz/corpus/$format" -max_total_time="$seconds" -rss_limit_mb=2048 \
     -max_len=4096 -print_final_stats=1 -artifact_prefix="build-fuzz/crashes/$format/" \
-    2>&1 | grep -E "^#[0-9]+.*DONE|stat::number_of_executed_units|stat::new_units_added|cov:|ERROR|SUMMARY" |
-    tail -6
+    >"build-fuzz/$format.log" 2>&1 || echo "$format: the fuzzer stopped on a finding"
+  grep -E "DONE|stat::number_of_executed_units|stat::new_units_added|runtime error|ERROR|SUMMARY" \
+    "build-fuzz/$format.log" | tail -6
+  ls "build-fuzz/crashes/$format"
 done
