@@ -285,21 +285,43 @@ void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
   }
 }
 
-// The vertex element as a PointCloud: x, y, z; nx, ny, nz as normals when all three exist;
-// every other scalar property as a named scalar.
-PointCloud ReadPly(const std::string& path, std::istream& in) {
+struct PlyHeader {
+  PlyFormat format = PlyFormat::kAscii;
+  std::vector<PlyElement> elements;
+  long lines = 0;  // up to and including end_header
+};
+
+// One property line of the header ("property TYPE NAME" or "property list COUNT TYPE NAME").
+PlyProperty ParsePlyProperty(const std::string& path, long number, std::istream& tokens) {
+  PlyProperty property;
+  std::string type;
+  tokens >> type;
+  if (type == "list") {
+    tokens >> property.count_type >> property.type;
+    if (!PlyTypeIsInteger(property.count_type)) {
+      Fail(path, number, "list count type must be an integer type, got '" +
+                             Excerpt(property.count_type) + "'");
+    }
+  } else {
+    property.type = type;
+  }
+  if (!(tokens >> property.name)) Fail(path, number, "malformed property line");
+  if (PlyTypeSize(property.type) == 0) {
+    Fail(path, number, "unknown property type '" + Excerpt(property.type) + "'");
+  }
+  return property;
+}
+
+PlyHeader ReadPlyHeader(const std::string& path, std::istream& in) {
   std::string line;
-  long number = 0;
   if (!ReadLine(path, in, &line, 1) || line.rfind("ply", 0) != 0) {
     Fail(path, 1, "not a PLY file (missing 'ply' magic)");
   }
-  ++number;
-  PlyFormat format = PlyFormat::kAscii;
+  PlyHeader header;
+  header.lines = 1;
   bool has_format = false;
-  std::vector<PlyElement> elements;
-  bool header_done = false;
-  while (ReadLine(path, in, &line, number + 1)) {
-    ++number;
+  while (ReadLine(path, in, &line, header.lines + 1)) {
+    const long number = ++header.lines;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream tokens(line);
     std::string keyword;
@@ -307,9 +329,9 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
     if (keyword == "format") {
       std::string name;
       tokens >> name;
-      if (name == "ascii") format = PlyFormat::kAscii;
-      else if (name == "binary_little_endian") format = PlyFormat::kBinaryLittleEndian;
-      else if (name == "binary_big_endian") format = PlyFormat::kBinaryBigEndian;
+      if (name == "ascii") header.format = PlyFormat::kAscii;
+      else if (name == "binary_little_endian") header.format = PlyFormat::kBinaryLittleEndian;
+      else if (name == "binary_big_endian") header.format = PlyFormat::kBinaryBigEndian;
       else Fail(path, number, "unknown PLY format '" + name + "'");
       has_format = true;
     } else if (keyword == "element") {
@@ -317,121 +339,128 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
       if (!(tokens >> element.name >> element.count) || element.count < 0) {
         Fail(path, number, "malformed element line");
       }
-      elements.push_back(element);
+      header.elements.push_back(element);
     } else if (keyword == "property") {
-      if (elements.empty()) Fail(path, number, "property before any element");
-      PlyProperty property;
-      std::string type;
-      tokens >> type;
-      if (type == "list") {
-        tokens >> property.count_type >> property.type;
-        if (PlyTypeSize(property.count_type) == 0 || !PlyTypeIsInteger(property.count_type)) {
-          Fail(path, number, "list count type must be an integer type, got '" +
-                                 Excerpt(property.count_type) + "'");
-        }
-      } else {
-        property.type = type;
-      }
-      if (!(tokens >> property.name)) Fail(path, number, "malformed property line");
-      if (PlyTypeSize(property.type) == 0) {
-        Fail(path, number, "unknown property type '" + Excerpt(property.type) + "'");
-      }
-      elements.back().properties.push_back(property);
+      if (header.elements.empty()) Fail(path, number, "property before any element");
+      header.elements.back().properties.push_back(ParsePlyProperty(path, number, tokens));
     } else if (keyword == "end_header") {
-      header_done = true;
-      break;
+      if (!has_format) Fail(path, number, "PLY header has no format line");
+      return header;
     } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
       Fail(path, number, "unknown PLY header keyword '" + keyword + "'");
     }
   }
-  if (!header_done) Fail(path, number, "PLY header has no end_header");
-  if (!has_format) Fail(path, number, "PLY header has no format line");
-  CheckPlyCountsFitBody(path, format, elements, &in);
+  Fail(path, header.lines, "PLY header has no end_header");
+}
 
-  PointCloud cloud;
-  PointList& points = cloud.points;
-  const bool swap = (format == PlyFormat::kBinaryBigEndian) == HostIsLittleEndian();
-  for (const PlyElement& element : elements) {
-    const bool is_vertex = element.name == "vertex";
-    int xyz[3] = {-1, -1, -1};
+// Where the vertex element keeps x, y, z, the normal (all three or none) and every other
+// scalar property.
+struct VertexLayout {
+  int xyz[3] = {-1, -1, -1};
+  int normal[3] = {-1, -1, -1};
+  std::vector<size_t> scalars;
+
+  bool has_normals() const { return normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0; }
+};
+
+VertexLayout LayoutOf(const std::string& path, const PlyElement& vertex) {
+  VertexLayout layout;
+  const char* kNames[2][3] = {{"x", "y", "z"}, {"nx", "ny", "nz"}};
+  for (size_t a = 0; a < vertex.properties.size(); ++a) {
+    const PlyProperty& property = vertex.properties[a];
+    bool placed = false;
+    for (int c = 0; c < 3; ++c) {
+      if (property.name == kNames[0][c]) layout.xyz[c] = static_cast<int>(a), placed = true;
+      if (property.count_type.empty() && property.name == kNames[1][c]) {
+        layout.normal[c] = static_cast<int>(a), placed = true;
+      }
+    }
+    if (!placed && property.count_type.empty()) layout.scalars.push_back(a);
+  }
+  if (layout.xyz[0] < 0 || layout.xyz[1] < 0 || layout.xyz[2] < 0) {
+    Fail(path, 0, "the vertex element has no x, y, z properties");
+  }
+  return layout;
+}
+
+// Reads item `item` of `element` into `values` (one per property; a list keeps its last
+// value). `number` counts the lines read so far (ascii).
+void ReadPlyItem(const std::string& path, std::istream& in, PlyFormat format,
+                 const PlyElement& element, long item, long* number,
+                 std::vector<double>* values) {
+  if (format == PlyFormat::kAscii) {
+    std::string line;
+    if (!ReadLine(path, in, &line, *number + 1)) {
+      Fail(path, *number, "file ends inside element '" + element.name + "'");
+    }
+    ++*number;
+    std::istringstream tokens(line);
     for (size_t a = 0; a < element.properties.size(); ++a) {
-      const std::string& name = element.properties[a].name;
-      if (name == "x") xyz[0] = static_cast<int>(a);
-      if (name == "y") xyz[1] = static_cast<int>(a);
-      if (name == "z") xyz[2] = static_cast<int>(a);
+      long count = 1;
+      if (!element.properties[a].count_type.empty() && !(tokens >> count)) count = -1;
+      if (count < 0) Fail(path, *number, "malformed list");
+      for (long c = 0; c < count; ++c) {
+        std::string token;
+        if (!(tokens >> token)) Fail(path, *number, "too few values on line");
+        char* end = nullptr;
+        (*values)[a] = std::strtod(token.c_str(), &end);
+        if (*end != '\0') Fail(path, *number, "malformed number '" + token + "'");
+      }
     }
-    if (is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0)) {
-      Fail(path, 0, "the vertex element has no x, y, z properties");
-    }
-    int normal[3] = {-1, -1, -1};
-    std::vector<size_t> scalar_properties;
-    for (size_t a = 0; is_vertex && a < element.properties.size(); ++a) {
+    return;
+  }
+  const bool swap = (format == PlyFormat::kBinaryBigEndian) == HostIsLittleEndian();
+  try {
+    for (size_t a = 0; a < element.properties.size(); ++a) {
       const PlyProperty& property = element.properties[a];
-      if (!property.count_type.empty()) continue;
-      if (property.name == "x" || property.name == "y" || property.name == "z") continue;
-      if (property.name == "nx") normal[0] = static_cast<int>(a);
-      else if (property.name == "ny") normal[1] = static_cast<int>(a);
-      else if (property.name == "nz") normal[2] = static_cast<int>(a);
-      else scalar_properties.push_back(a);
+      if (property.count_type.empty()) {
+        (*values)[a] = ReadBinaryValue(in, property.type, swap);
+        continue;
+      }
+      const long count = static_cast<long>(ReadBinaryValue(in, property.count_type, swap));
+      for (long c = 0; c < count; ++c) ReadBinaryValue(in, property.type, swap);
     }
-    const bool has_normals = normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0;
-    for (size_t a : scalar_properties) cloud.scalars.push_back({element.properties[a].name, {}});
-    if (is_vertex) points.reserve(element.count);
+  } catch (const std::runtime_error&) {
+    Fail(path, 0, "binary data ends inside element '" + element.name + "' (item " +
+                      std::to_string(item) + " of " + std::to_string(element.count) + ")");
+  }
+}
+
+// The vertex element as a PointCloud: x, y, z; nx, ny, nz as normals when all three exist;
+// every other scalar property as a named scalar. Elements before it are read and skipped.
+PointCloud ReadPly(const std::string& path, std::istream& in) {
+  const PlyHeader header = ReadPlyHeader(path, in);
+  CheckPlyCountsFitBody(path, header.format, header.elements, &in);
+  PointCloud cloud;
+  long number = header.lines;
+  for (const PlyElement& element : header.elements) {
     std::vector<double> values(element.properties.size());
-    for (long item = 0; item < element.count; ++item) {
-      if (format == PlyFormat::kAscii) {
-        if (!ReadLine(path, in, &line, number + 1)) {
-          Fail(path, number, "file ends inside element '" + element.name + "'");
-        }
-        ++number;
-        std::istringstream tokens(line);
-        for (size_t a = 0; a < element.properties.size(); ++a) {
-          const PlyProperty& property = element.properties[a];
-          long count = 1;
-          if (!property.count_type.empty() && !(tokens >> count)) count = -1;
-          if (count < 0) Fail(path, number, "malformed list");
-          for (long c = 0; c < count; ++c) {
-            std::string token;
-            if (!(tokens >> token)) Fail(path, number, "too few values on line");
-            char* end = nullptr;
-            values[a] = std::strtod(token.c_str(), &end);
-            if (*end != '\0') Fail(path, number, "malformed number '" + token + "'");
-          }
-        }
-      } else {
-        try {
-          for (size_t a = 0; a < element.properties.size(); ++a) {
-            const PlyProperty& property = element.properties[a];
-            if (property.count_type.empty()) {
-              values[a] = ReadBinaryValue(in, property.type, swap);
-            } else {
-              const double count = ReadBinaryValue(in, property.count_type, swap);
-              for (long c = 0; c < static_cast<long>(count); ++c) {
-                ReadBinaryValue(in, property.type, swap);
-              }
-            }
-          }
-        } catch (const std::runtime_error&) {
-          Fail(path, 0, "binary data ends inside element '" + element.name + "' (item " +
-                            std::to_string(item) + " of " + std::to_string(element.count) + ")");
-        }
+    if (element.name != "vertex") {
+      for (long item = 0; item < element.count; ++item) {
+        ReadPlyItem(path, in, header.format, element, item, &number, &values);
       }
-      if (is_vertex) {
-        const Point3 p(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
-        if (!p.allFinite()) {
-          Fail(path, format == PlyFormat::kAscii ? number : 0,
-               "vertex " + std::to_string(item) + " has a non-finite coordinate");
-        }
-        points.push_back(p);
-        if (has_normals) {
-          cloud.normals.emplace_back(values[normal[0]], values[normal[1]], values[normal[2]]);
-        }
-        for (size_t s = 0; s < scalar_properties.size(); ++s) {
-          cloud.scalars[s].second.push_back(static_cast<float>(values[scalar_properties[s]]));
-        }
+      continue;
+    }
+    const VertexLayout layout = LayoutOf(path, element);
+    for (size_t a : layout.scalars) cloud.scalars.push_back({element.properties[a].name, {}});
+    cloud.points.reserve(element.count);
+    for (long item = 0; item < element.count; ++item) {
+      ReadPlyItem(path, in, header.format, element, item, &number, &values);
+      const Point3 p(values[layout.xyz[0]], values[layout.xyz[1]], values[layout.xyz[2]]);
+      if (!p.allFinite()) {
+        Fail(path, header.format == PlyFormat::kAscii ? number : 0,
+             "vertex " + std::to_string(item) + " has a non-finite coordinate");
+      }
+      cloud.points.push_back(p);
+      if (layout.has_normals()) {
+        cloud.normals.emplace_back(values[layout.normal[0]], values[layout.normal[1]],
+                                   values[layout.normal[2]]);
+      }
+      for (size_t s = 0; s < layout.scalars.size(); ++s) {
+        cloud.scalars[s].second.push_back(static_cast<float>(values[layout.scalars[s]]));
       }
     }
-    if (is_vertex) break;
+    break;
   }
   return cloud;
 }
