@@ -46,31 +46,138 @@ bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
   return false;
 }
 
-SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
-                                             const Options& options, energy::Variables* v,
-                                             const IterationCallback& callback,
-                                             MinimizerProgress* progress) {
-  SolverSummary summary;
-  const Clock::time_point run_start = Clock::now();
-  if (!options.IsValid(&summary.message)) return summary;
-  MinimizerProgress local_progress;
-  MinimizerProgress& state = progress ? *progress : local_progress;
+namespace {
 
-  const int threads = options.num_threads;
-  const GncOptions& gnc = options.gnc;
-  // The energy of Eq. (5) at the target selectivities; mu_l may still be replaced by the
-  // scale-aware value at the first local step.
-  energy::EnergyParameters parameters = options.energy;
-  if (!std::isnan(state.mu_l)) parameters.mu_l = state.mu_l;
-  if (!options.optimize_orientations) v->s.setOnes();
-  TangentPlaneSmoother smoother(problem);
-  const Clock::time_point initial_start = Clock::now();
-  summary.initial_energy = energy::EvaluateEnergy(problem, parameters, *v, threads);
-  // Energy evaluations made only for the trace, left out of elapsed_seconds.
-  double traced_seconds = SecondsSince(initial_start);
+// One call of Minimize: Alg. 1's outer loop over the state it continues (`progress`), with
+// block timing and tracing, graduated non-convexity and the stopping rule kept apart.
+class AlternatingRun {
+ public:
+  AlternatingRun(const energy::Problem& problem, const AlternatingMinimizer::Options& options,
+                 energy::Variables* v, MinimizerProgress* state)
+      : problem_(problem),
+        options_(options),
+        v_(v),
+        state_(*state),
+        threads_(options.num_threads),
+        parameters_(options.energy),
+        smoother_(problem) {
+    // The energy of Eq. (5) at the target selectivities; mu_l may still be replaced by the
+    // scale-aware value at the first local step.
+    if (!std::isnan(state_.mu_l)) parameters_.mu_l = state_.mu_l;
+    if (!options.optimize_orientations) v->s.setOnes();
+  }
+
+  SolverSummary Run(const IterationCallback& callback) {
+    const Clock::time_point initial_start = Clock::now();
+    summary_.initial_energy = energy::EvaluateEnergy(problem_, parameters_, *v_, threads_);
+    traced_seconds_ = SecondsSince(initial_start);
+    summary_.termination = TerminationType::kNoConvergence;
+    summary_.message = "reached max_iters";
+    const int last_iteration = state_.iterations + options_.max_iterations;
+    for (int iteration = state_.iterations + 1; iteration <= last_iteration; ++iteration) {
+      const IterationRecord record = RunIteration(iteration);
+      const bool at_targets = NextGncStage();
+      if (!std::isfinite(record.energy.total())) {
+        Stop(TerminationType::kFailure, "the energy became non-finite at iteration " +
+                                            std::to_string(iteration));
+        break;
+      }
+      if (callback && !callback(record)) {
+        Stop(TerminationType::kUserAbort, "stopped by the callback");
+        break;
+      }
+      if (at_targets && Converged(record.energy.total())) break;
+    }
+    if (summary_.termination == TerminationType::kNoConvergence) DescribeNoConvergence();
+    summary_.mu_l = parameters_.mu_l;
+    summary_.eta = parameters_.eta;
+    summary_.lambda = parameters_.lambda;
+    summary_.total_seconds = SecondsSince(run_start_);
+    return summary_;
+  }
+
+ private:
+  // One outer iteration of Alg. 1: the local step (lines 9-10), then inner_iterations passes
+  // of the global step (lines 12-18).
+  IterationRecord RunIteration(int iteration) {
+    const Clock::time_point iteration_start = Clock::now();
+    const energy::PlaneField previous_t = v_->t;
+    IterationRecord record;
+    record.iteration = iteration;
+    LocalStep(&record);
+    for (int inner = 1; inner <= options_.inner_iterations; ++inner) GlobalPass(inner, &record);
+    record.energy = options_.trace_blocks
+                        ? summary_.steps.back().energy
+                        : energy::EvaluateEnergy(problem_, parameters_, *v_, threads_);
+    if (iteration > 1) {
+      record.point_motion = RmsProjectedPointChange(problem_, previous_t, v_->t, threads_);
+    }
+    record.seconds = SecondsSince(iteration_start);
+    record.elapsed_seconds = SecondsSince(run_start_) - traced_seconds_;
+    summary_.iterations.push_back(record);
+    summary_.num_iterations = iteration;
+    summary_.final_energy = record.energy;
+    state_.iterations = iteration;
+    return record;
+  }
+
+  // H (Eq. 10), then L (Eq. 6) at the current mu_l. The first local step fixes the target
+  // mu_l (from the noise when mu_l_noise_sigmas > 0) and starts its continuation.
+  void LocalStep(IterationRecord* record) {
+    record->local_seconds += RunBlock("H", record->iteration, 0, [&] {
+      UpdateLocalPlanes(problem_, parameters_, threads_, v_);
+      return -1;
+    }).seconds;
+    if (std::isnan(state_.mu_l)) {
+      if (options_.mu_l_noise_sigmas > 0.0) {
+        parameters_.mu_l = NoiseScaledMuL(problem_, *v_, options_.mu_l_noise_sigmas);
+      }
+      state_.mu_l = parameters_.mu_l;
+    }
+    const GncOptions& gnc = options_.gnc;
+    if (gnc.continues_mu_l() && !state_.gnc_mu_l.started()) {
+      state_.gnc_mu_l.Start(gnc, parameters_.mu_l,
+                            MaxSquaredFittingResidual(problem_, *v_, threads_));
+    }
+    record->mu_l = state_.gnc_mu_l.Value(parameters_.mu_l);
+    const energy::FittingTerm fitting(problem_, record->mu_l, threads_);
+    record->local_seconds += RunBlock("L", record->iteration, 0, [&] {
+      fitting.UpdateLineProcesses(v_);
+      return -1;
+    }).seconds;
+  }
+
+  // T (Eq. 9), M (Eq. 7) at the current mu_m, and S (Eq. 8).
+  void GlobalPass(int inner, IterationRecord* record) {
+    const int iteration = record->iteration;
+    const StepRecord t_step = RunBlock("T", iteration, inner, [&] {
+      return smoother_.Update(parameters_, options_.linear_solver, threads_, v_).iterations;
+    });
+    record->global_seconds += t_step.seconds;
+    record->cg_iterations += t_step.cg_iterations;
+    const GncOptions& gnc = options_.gnc;
+    if (gnc.continues_mu_m() && !state_.gnc_mu_m.started()) {
+      state_.gnc_mu_m.Start(gnc, parameters_.mu_m,
+                            MaxSquaredSmoothnessResidual(problem_, *v_, threads_));
+    }
+    record->mu_m = state_.gnc_mu_m.Value(parameters_.mu_m);
+    const energy::SmoothnessTerm smoothness(problem_, parameters_.lambda, record->mu_m,
+                                            threads_);
+    record->global_seconds += RunBlock("M", iteration, inner, [&] {
+      smoothness.UpdateLineProcesses(v_);
+      return -1;
+    }).seconds;
+    if (options_.optimize_orientations) {
+      record->global_seconds += RunBlock("S", iteration, inner, [&] {
+        smoothness.UpdateOrientations(v_);
+        return -1;
+      }).seconds;
+    }
+  }
 
   // Runs one block update, times it and, when tracing, records the energy after it.
-  auto run_block = [&](const char* block, int iteration, int inner, auto&& update) {
+  template <typename Update>
+  StepRecord RunBlock(const char* block, int iteration, int inner, Update&& update) {
     const Clock::time_point start = Clock::now();
     StepRecord step;
     step.cg_iterations = update();
@@ -78,138 +185,98 @@ SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
     step.block = block;
     step.iteration = iteration;
     step.inner_iteration = inner;
-    if (options.trace_blocks) {
+    if (options_.trace_blocks) {
       const Clock::time_point trace_start = Clock::now();
-      step.energy = energy::EvaluateEnergy(problem, parameters, *v, threads);
-      traced_seconds += SecondsSince(trace_start);
+      step.energy = energy::EvaluateEnergy(problem_, parameters_, *v_, threads_);
+      traced_seconds_ += SecondsSince(trace_start);
     }
-    summary.steps.push_back(step);
+    summary_.steps.push_back(step);
     return step;
-  };
+  }
 
-  summary.termination = TerminationType::kNoConvergence;
-  summary.message = "reached max_iters";
-  const int last_iteration = state.iterations + options.max_iterations;
-  for (int iteration = state.iterations + 1; iteration <= last_iteration; ++iteration) {
-    const Clock::time_point iteration_start = Clock::now();
-    const energy::PlaneField previous_t = v->t;
-    IterationRecord record;
-    record.iteration = iteration;
-    // Local tangent-plane fitting step (Alg. 1 lines 9-10).
-    record.local_seconds += run_block("H", iteration, 0, [&] {
-      UpdateLocalPlanes(problem, parameters, threads, v);
-      return -1;
-    }).seconds;
-    if (std::isnan(state.mu_l)) {  // the first local step fixes the target mu_l
-      if (options.mu_l_noise_sigmas > 0.0) {
-        parameters.mu_l = NoiseScaledMuL(problem, *v, options.mu_l_noise_sigmas);
-      }
-      state.mu_l = parameters.mu_l;
-    }
-    if (gnc.continues_mu_l() && !state.gnc_mu_l.started()) {
-      state.gnc_mu_l.Start(gnc, parameters.mu_l, MaxSquaredFittingResidual(problem, *v, threads));
-    }
-    record.mu_l = state.gnc_mu_l.Value(parameters.mu_l);
-    const energy::FittingTerm fitting(problem, record.mu_l, threads);
-    record.local_seconds += run_block("L", iteration, 0, [&] {
-      fitting.UpdateLineProcesses(v);
-      return -1;
-    }).seconds;
-    // Global piecewise-smoothness step (Alg. 1 lines 12-18).
-    for (int inner = 1; inner <= options.inner_iterations; ++inner) {
-      const StepRecord t_step = run_block("T", iteration, inner, [&] {
-        return smoother.Update(parameters, options.linear_solver, threads, v).iterations;
-      });
-      record.global_seconds += t_step.seconds;
-      record.cg_iterations += t_step.cg_iterations;
-      if (gnc.continues_mu_m() && !state.gnc_mu_m.started()) {
-        state.gnc_mu_m.Start(gnc, parameters.mu_m,
-                             MaxSquaredSmoothnessResidual(problem, *v, threads));
-      }
-      record.mu_m = state.gnc_mu_m.Value(parameters.mu_m);
-      const energy::SmoothnessTerm smoothness(problem, parameters.lambda, record.mu_m, threads);
-      record.global_seconds += run_block("M", iteration, inner, [&] {
-        smoothness.UpdateLineProcesses(v);
-        return -1;
-      }).seconds;
-      if (options.optimize_orientations) {
-        record.global_seconds += run_block("S", iteration, inner, [&] {
-          smoothness.UpdateOrientations(v);
-          return -1;
-        }).seconds;
-      }
-    }
-    record.energy = options.trace_blocks
-                        ? summary.steps.back().energy
-                        : energy::EvaluateEnergy(problem, parameters, *v, threads);
-    if (iteration > 1) {
-      record.point_motion = RmsProjectedPointChange(problem, previous_t, v->t, threads);
-    }
-    record.seconds = SecondsSince(iteration_start);
-    record.elapsed_seconds = SecondsSince(run_start) - traced_seconds;
-    summary.iterations.push_back(record);
-    summary.num_iterations = iteration;
-    summary.final_energy = record.energy;
-    state.iterations = iteration;
+  bool AtTargets() const {
+    return state_.gnc_mu_l.AtTarget(parameters_.mu_l) &&
+           state_.gnc_mu_m.AtTarget(parameters_.mu_m);
+  }
 
-    // The next GNC stage, or none once both continued selectivities are at their targets.
-    const bool at_targets = state.gnc_mu_l.AtTarget(parameters.mu_l) &&
-                            state.gnc_mu_m.AtTarget(parameters.mu_m);
-    if (!at_targets && ++state.stage_iterations == gnc.stage_iterations) {
-      state.gnc_mu_l.Shrink(gnc, parameters.mu_l);
-      state.gnc_mu_m.Shrink(gnc, parameters.mu_m);
-      state.stage_iterations = 0;
+  // Moves graduated non-convexity to its next stage when the current one is done; true once
+  // both continued selectivities are at their targets (always without continuation).
+  bool NextGncStage() {
+    const bool at_targets = AtTargets();
+    if (!at_targets && ++state_.stage_iterations == options_.gnc.stage_iterations) {
+      state_.gnc_mu_l.Shrink(options_.gnc, parameters_.mu_l);
+      state_.gnc_mu_m.Shrink(options_.gnc, parameters_.mu_m);
+      state_.stage_iterations = 0;
     }
+    return at_targets;
+  }
 
-    const double total = record.energy.total();
-    if (!std::isfinite(total)) {
-      summary.termination = TerminationType::kFailure;
-      summary.message = "the energy became non-finite at iteration " + std::to_string(iteration);
-      break;
-    }
-    if (callback && !callback(record)) {
-      summary.termination = TerminationType::kUserAbort;
-      summary.message = "stopped by the callback";
-      break;
-    }
-    if (!at_targets) continue;
-    std::vector<double>& history = state.energy_history;
+  // The stopping rule: |E_t - E_{t-w}| <= tolerance |E_{t-w}| over the iterations run at the
+  // target selectivities.
+  bool Converged(double total) {
+    std::vector<double>& history = state_.energy_history;
     history.push_back(total);
-    const int w = options.energy_window;
-    if (options.energy_tolerance > 0.0 && static_cast<int>(history.size()) > w) {
-      const double before = history[history.size() - 1 - w];
-      if (std::abs(total - before) <= options.energy_tolerance * std::abs(before)) {
-        summary.termination = TerminationType::kConvergence;
-        std::ostringstream out;
-        out << "energy changed by less than " << 100.0 * options.energy_tolerance
-            << "% over " << w << " iterations";
-        summary.message = out.str();
-        break;
-      }
-    }
-  }
-  if (summary.termination == TerminationType::kNoConvergence &&
-      !(state.gnc_mu_l.AtTarget(parameters.mu_l) && state.gnc_mu_m.AtTarget(parameters.mu_m))) {
-    summary.message = "reached max_iters before graduated non-convexity reached its targets";
-  } else if (summary.termination == TerminationType::kNoConvergence &&
-             !summary.iterations.empty() &&
-             !std::isnan(summary.iterations.back().point_motion)) {
-    // Say how far from standing still the output is: a slow drift of the plane field where
-    // the data leave a tilt undetermined lowers the energy long after the points settle.
+    const int w = options_.energy_window;
+    if (options_.energy_tolerance <= 0.0 || static_cast<int>(history.size()) <= w) return false;
+    const double before = history[history.size() - 1 - w];
+    if (std::abs(total - before) > options_.energy_tolerance * std::abs(before)) return false;
     std::ostringstream out;
-    out << summary.message << "; the output points moved " << std::setprecision(2)
-        << summary.iterations.back().point_motion << " of the diagonal (RMS) in the last one";
-    if (options.mu_l_noise_sigmas > 0.0) {
-      const double sigma = std::sqrt(parameters.mu_l) / options.mu_l_noise_sigmas;
-      out << ", " << summary.iterations.back().point_motion / sigma << " noise sigma";
-    }
-    summary.message = out.str();
+    out << "energy changed by less than " << 100.0 * options_.energy_tolerance << "% over " << w
+        << " iterations";
+    Stop(TerminationType::kConvergence, out.str());
+    return true;
   }
-  summary.mu_l = parameters.mu_l;
-  summary.eta = parameters.eta;
-  summary.lambda = parameters.lambda;
-  summary.total_seconds = SecondsSince(run_start);
-  return summary;
+
+  void Stop(TerminationType termination, const std::string& message) {
+    summary_.termination = termination;
+    summary_.message = message;
+  }
+
+  // Says why max_iters was reached: before GNC got to its targets, or how far from standing
+  // still the output is (a slow drift of the plane field where the data leave a tilt
+  // undetermined lowers the energy long after the points settle).
+  void DescribeNoConvergence() {
+    if (!AtTargets()) {
+      summary_.message = "reached max_iters before graduated non-convexity reached its targets";
+      return;
+    }
+    if (summary_.iterations.empty() || std::isnan(summary_.iterations.back().point_motion)) {
+      return;
+    }
+    const double motion = summary_.iterations.back().point_motion;
+    std::ostringstream out;
+    out << summary_.message << "; the output points moved " << std::setprecision(2) << motion
+        << " of the diagonal (RMS) in the last one";
+    if (options_.mu_l_noise_sigmas > 0.0) {
+      const double sigma = std::sqrt(parameters_.mu_l) / options_.mu_l_noise_sigmas;
+      out << ", " << motion / sigma << " noise sigma";
+    }
+    summary_.message = out.str();
+  }
+
+  const energy::Problem& problem_;
+  const AlternatingMinimizer::Options& options_;
+  energy::Variables* v_;
+  MinimizerProgress& state_;
+  const int threads_;
+  energy::EnergyParameters parameters_;
+  TangentPlaneSmoother smoother_;
+  SolverSummary summary_;
+  const Clock::time_point run_start_ = Clock::now();
+  double traced_seconds_ = 0.0;  // energy evaluations made only for the trace
+};
+
+}  // namespace
+
+SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
+                                             const Options& options, energy::Variables* v,
+                                             const IterationCallback& callback,
+                                             MinimizerProgress* progress) {
+  SolverSummary summary;
+  if (!options.IsValid(&summary.message)) return summary;
+  MinimizerProgress local_progress;
+  return AlternatingRun(problem, options, v, progress ? progress : &local_progress)
+      .Run(callback);
 }
 
 }  // namespace lpd::solvers
