@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <numeric>
 #include <stdexcept>
 
@@ -132,32 +133,20 @@ solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
   return std::move(saved.state);
 }
 
-}  // namespace
+// True when `a` and `b` name the same file (also through another spelling or a link).
+bool SameFile(const std::string& a, const std::string& b) {
+  std::error_code error;
+  return a == b || std::filesystem::equivalent(a, b, error);
+}
 
-int RunDenoiseCommand(const std::vector<std::string>& arguments) {
-  if (arguments.size() > 1) {
-    throw std::invalid_argument("denoise takes at most one INPUT file, got " +
-                                std::to_string(arguments.size()));
-  }
-  const bool resume = !FLAGS_resume.empty();
-  if (resume && !arguments.empty()) {
-    throw std::invalid_argument("give either INPUT or --resume, not both");
-  }
-  solvers::DenoiseOptions options;
-  solvers::DenoiseState state;
-  if (resume) state = ResumeState(&options);
-  else options = DenoiseOptionsFromFlags();
-  options.minimizer.trace_blocks = FLAGS_trace;  // per-block energies cost a pass each
-  const bool use_default = arguments.empty() && !resume;
-  if (!use_default && FLAGS_output.empty() && FLAGS_save_state.empty()) {
-    throw std::invalid_argument("missing output file: give -o OUTPUT (or --save_state)");
-  }
-  // No output replaces an input, except that --overwrite lets --save_state update the state
-  // it resumed from.
-  const std::string input = resume ? FLAGS_resume : arguments.empty() ? "" : arguments[0];
+// Refuses, before any work, outputs that would replace an input, collide, have no known
+// format, or cannot be written. --overwrite lets --save_state update the state it resumed
+// from, and nothing else that is an input.
+void CheckOutputs(const std::string& input, bool resume) {
   const bool updates_state = resume && FLAGS_save_state == FLAGS_resume && FLAGS_overwrite;
-  if (!input.empty() &&
-      (FLAGS_output == input || (FLAGS_save_state == input && !updates_state))) {
+  if (!input.empty() && ((!FLAGS_output.empty() && SameFile(FLAGS_output, input)) ||
+                         (!FLAGS_save_state.empty() && SameFile(FLAGS_save_state, input) &&
+                          !updates_state))) {
     throw std::invalid_argument("output " + input + " is also an input (refusing to overwrite it)");
   }
   if (!FLAGS_output.empty() && FLAGS_output == FLAGS_save_state) {
@@ -172,57 +161,46 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     RefuseExistingOutput(FLAGS_output, FLAGS_overwrite);
   }
   if (!FLAGS_save_state.empty()) RefuseExistingOutput(FLAGS_save_state, FLAGS_overwrite);
+}
 
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
-  DefaultInput default_input;
-  energy::PointList input_points;   // kept for further passes without the outliers
-  energy::PointList input_normals;  // from a PLY input with nx, ny, nz
-  if (use_default) {
-    default_input = MakeDefaultInput();
-    std::fprintf(stderr,
-                 "no INPUT given: denoising the built-in %s, %d points, Gaussian noise "
-                 "%.2f%% of the bounding-box diagonal, seed %llu\n",
-                 default_input.shape.description().c_str(), FLAGS_default_points,
-                 100.0 * FLAGS_default_noise,
-                 static_cast<unsigned long long>(FLAGS_seed));
-    input_points = default_input.points;
-  } else if (!resume) {
+// The points to denoise: INPUT's (and its normals, if it has them), or the built-in box.
+struct DenoiseInput {
+  DefaultInput built_in;          // when no INPUT is given
+  bool is_built_in = false;
+  energy::PointList points;       // kept for further passes without the outliers
+  energy::PointList normals;      // from an input with normals
+
+  const energy::PointList* normals_or_null() const { return normals.empty() ? nullptr : &normals; }
+};
+
+DenoiseInput LoadInput(const std::vector<std::string>& arguments) {
+  DenoiseInput input;
+  if (!arguments.empty()) {
     PointCloud cloud = ReadPointCloud(arguments[0]);
-    input_points = std::move(cloud.points);
-    input_normals = std::move(cloud.normals);
+    input.points = std::move(cloud.points);
+    input.normals = std::move(cloud.normals);
+    return input;
   }
-  if (!resume) {
-    state = solvers::StartDenoising(input_points, options,
-                                    input_normals.empty() ? nullptr : &input_normals);
-  }
+  input.is_built_in = true;
+  input.built_in = MakeDefaultInput();
+  std::fprintf(stderr,
+               "no INPUT given: denoising the built-in %s, %d points, Gaussian noise "
+               "%.2f%% of the bounding-box diagonal, seed %llu\n",
+               input.built_in.shape.description().c_str(), FLAGS_default_points,
+               100.0 * FLAGS_default_noise, static_cast<unsigned long long>(FLAGS_seed));
+  input.points = input.built_in.points;
+  return input;
+}
 
-  const solvers::IterationCallback progress = ProgressPrinter(options.solver, FLAGS_quiet);
-  ThrowIfInterrupted();
-  solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state, progress);
-  ThrowIfInterrupted();
-  if (!FLAGS_save_state.empty()) {
-    WriteDenoiseState(FLAGS_save_state, state, options, FLAGS_overwrite);
-  }
-  solvers::DenoiseResult result = solvers::FinishDenoising(state, options, std::move(summary));
-  // A resumed run has no input coordinates left to start another pass from.
-  if (!resume) {
-    result = solvers::RerunWithoutOutliers(input_points, options, std::move(result), progress,
-                                           input_normals.empty() ? nullptr : &input_normals);
-  }
-  ThrowIfInterrupted();
-  result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
-
-  const PointCloud cloud = MakeOutputCloud(result);
-  if (!FLAGS_output.empty()) WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
-
+// The run's summary on stdout (stderr for the solver's brief report and notes).
+void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOptions& options,
+                  size_t num_input_points, size_t num_output_points) {
   std::fprintf(stderr, "%s\n", result.summary.BriefReport().c_str());
   if (!result.removal_note.empty()) std::fprintf(stderr, "note: %s\n", result.removal_note.c_str());
   std::printf(
       "points in %zu, out %zu, outliers flagged %d, removed %d, feature points %d, "
       "iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
-      state.order.size(), cloud.points.size(), result.num_outliers, result.num_removed,
+      num_input_points, num_output_points, result.num_outliers, result.num_removed,
       result.num_features, result.summary.num_iterations, result.passes, result.total_seconds,
       result.setup_seconds);
   std::string chosen;
@@ -240,16 +218,71 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
                 result.snapping.snapped_to_edge, result.snapping.snapped_at_corner,
                 result.snapping.left_on_plane);
   }
-  if (use_default) {
-    const double diagonal = default_input.diagonal;
-    const double before = MeanDistance(default_input.shape, default_input.points);
-    const double after = MeanDistance(default_input.shape, cloud.points);
-    std::printf(
-        "mean distance to the clean box: input %.3e, output %.3e (/diagonal: %.3e -> %.3e, "
-        "%.1fx %s)\n",
-        before, after, before / diagonal, after / diagonal,
-        after <= before ? before / after : after / before, after <= before ? "lower" : "higher");
+}
+
+// How much closer to the clean built-in box the output is than the input.
+void PrintBuiltInDistance(const DefaultInput& built_in, const energy::PointList& output) {
+  const double diagonal = built_in.diagonal;
+  const double before = MeanDistance(built_in.shape, built_in.points);
+  const double after = MeanDistance(built_in.shape, output);
+  std::printf(
+      "mean distance to the clean box: input %.3e, output %.3e (/diagonal: %.3e -> %.3e, "
+      "%.1fx %s)\n",
+      before, after, before / diagonal, after / diagonal,
+      after <= before ? before / after : after / before, after <= before ? "lower" : "higher");
+}
+
+}  // namespace
+
+int RunDenoiseCommand(const std::vector<std::string>& arguments) {
+  if (arguments.size() > 1) {
+    throw std::invalid_argument("denoise takes at most one INPUT file, got " +
+                                std::to_string(arguments.size()));
   }
+  const bool resume = !FLAGS_resume.empty();
+  if (resume && !arguments.empty()) {
+    throw std::invalid_argument("give either INPUT or --resume, not both");
+  }
+  solvers::DenoiseOptions options;
+  solvers::DenoiseState state;
+  if (resume) state = ResumeState(&options);
+  else options = DenoiseOptionsFromFlags();
+  options.minimizer.trace_blocks = FLAGS_trace;  // per-block energies cost a pass each
+  if (!arguments.empty() || resume) {
+    if (FLAGS_output.empty() && FLAGS_save_state.empty()) {
+      throw std::invalid_argument("missing output file: give -o OUTPUT (or --save_state)");
+    }
+  }
+  CheckOutputs(resume ? FLAGS_resume : arguments.empty() ? "" : arguments[0], resume);
+
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  DenoiseInput input;
+  if (!resume) {
+    input = LoadInput(arguments);
+    state = solvers::StartDenoising(input.points, options, input.normals_or_null());
+  }
+  const solvers::IterationCallback progress = ProgressPrinter(options.solver, FLAGS_quiet);
+  ThrowIfInterrupted();
+  solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state, progress);
+  ThrowIfInterrupted();
+  if (!FLAGS_save_state.empty()) {
+    WriteDenoiseState(FLAGS_save_state, state, options, FLAGS_overwrite);
+  }
+  solvers::DenoiseResult result = solvers::FinishDenoising(state, options, std::move(summary));
+  // A resumed run has no input coordinates left to start another pass from.
+  if (!resume) {
+    result = solvers::RerunWithoutOutliers(input.points, options, std::move(result), progress,
+                                           input.normals_or_null());
+  }
+  ThrowIfInterrupted();
+  result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
+
+  const PointCloud cloud = MakeOutputCloud(result);
+  if (!FLAGS_output.empty()) WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
+  PrintSummary(result, options, state.order.size(), cloud.points.size());
+  if (input.is_built_in) PrintBuiltInDistance(input.built_in, cloud.points);
   if (!FLAGS_save_state.empty()) std::printf("saved state %s\n", FLAGS_save_state.c_str());
   if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());
   return 0;
