@@ -216,23 +216,11 @@ NoiseOptions ToNoiseOptions(const ParameterSet& noise, const std::string& config
   return options;
 }
 
-SweepConfig LoadSweepConfig(const std::string& path) {
-  if (!std::filesystem::exists(path)) {
-    throw std::runtime_error(path + ": cannot open config (missing or unreadable)");
-  }
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& error) {
-    Fail(path, error.mark.line + 1, "invalid YAML: " + error.msg);
-  }
-  if (!root.IsMap()) Fail(path, 1, "a sweep config must be a mapping (name:, datasets:, ...)");
-  CheckKeys(path, root, "the config",
-            {"name", "repetitions", "seed", "parallel_cells", "threads_per_cell",
-             "ground_truth_samples", "feature_band", "save_clouds", "reconstructions",
-             "datasets", "noise", "methods"});
-  SweepConfig config;
-  config.path = path;
+namespace {
+
+// The run settings: name, repetitions, seed, parallelism, metric options, save_clouds.
+void LoadSettings(const std::string& path, const YAML::Node& root, SweepConfig* out) {
+  SweepConfig& config = *out;
   config.name = root["name"] ? Scalar(path, root["name"], "name")
                              : std::filesystem::path(path).stem().string();
   if (root["repetitions"]) config.repetitions = Integer(path, root["repetitions"], "repetitions", 1);
@@ -260,6 +248,9 @@ SweepConfig LoadSweepConfig(const std::string& path) {
     config.save_clouds = text == "true";
   }
 
+}
+
+void LoadReconstructions(const std::string& path, const YAML::Node& root, SweepConfig* config) {
   if (const YAML::Node reconstructions = root["reconstructions"]) {
     if (!reconstructions.IsSequence()) {
       Fail(path, Line(reconstructions), "'reconstructions' must be a list (advancing_front, "
@@ -267,7 +258,7 @@ SweepConfig LoadSweepConfig(const std::string& path) {
     }
     for (const YAML::Node& node : reconstructions) {
       try {
-        config.reconstructions.push_back(
+        config->reconstructions.push_back(
             ParseReconstruction(Scalar(path, node, "reconstructions")));
       } catch (const std::invalid_argument& error) {
         Fail(path, Line(node), error.what());
@@ -275,32 +266,43 @@ SweepConfig LoadSweepConfig(const std::string& path) {
     }
   }
 
+}
+
+void LoadDatasets(const std::string& path, const YAML::Node& root, SweepConfig* config) {
   const YAML::Node datasets = root["datasets"];
   if (!datasets || !datasets.IsSequence() || datasets.size() == 0) {
     Fail(path, datasets ? Line(datasets) : 1, "'datasets' must be a non-empty list");
   }
   std::set<std::string> names;
   for (const YAML::Node& node : datasets) {
-    config.datasets.push_back(LoadDataset(path, node));
-    if (!names.insert(config.datasets.back().name).second) {
-      Fail(path, config.datasets.back().line,
-           "two datasets are named '" + config.datasets.back().name + "' (give them names)");
+    config->datasets.push_back(LoadDataset(path, node));
+    if (!names.insert(config->datasets.back().name).second) {
+      Fail(path, config->datasets.back().line,
+           "two datasets are named '" + config->datasets.back().name + "' (give them names)");
     }
   }
 
+}
+
+// Every noise entry expanded into its grid; without a noise section, the data as they are.
+void LoadNoise(const std::string& path, const YAML::Node& root, SweepConfig* config) {
   if (const YAML::Node noise = root["noise"]) {
     if (!noise.IsSequence() || noise.size() == 0) Fail(path, Line(noise), "'noise' must be a non-empty list");
     for (const YAML::Node& node : noise) {
       if (!node.IsMap()) Fail(path, Line(node), "a noise entry must be a mapping");
       for (const ParameterSet& point : ExpandGrid(path, node, "")) {
         ToNoiseOptions(point, path);  // validates
-        config.noise.push_back(point);
+        config->noise.push_back(point);
       }
     }
   } else {
-    config.noise.push_back({{"sigma", {"0", 0}}});
+    config->noise.push_back({{"sigma", {"0", 0}}});
   }
 
+}
+
+// Every method entry expanded into its grid, each point checked as the method will read it.
+void LoadMethods(const std::string& path, const YAML::Node& root, SweepConfig* config) {
   const YAML::Node methods = root["methods"];
   if (!methods || !methods.IsSequence() || methods.size() == 0) {
     Fail(path, methods ? Line(methods) : 1, "'methods' must be a non-empty list");
@@ -322,9 +324,12 @@ SweepConfig LoadSweepConfig(const std::string& path) {
         }
         Fail(path, line, error.what());
       }
-      config.methods.push_back(config_point);
+      config->methods.push_back(config_point);
     }
   }
+}
+
+void CheckCellCount(const std::string& path, const SweepConfig& config) {
   double cells = 0.0;
   for (const DatasetConfig& dataset : config.datasets) {
     cells += static_cast<double>(config.repetitions) * config.methods.size() *
@@ -335,6 +340,33 @@ SweepConfig LoadSweepConfig(const std::string& path) {
                       " cells, more than " + std::to_string(static_cast<int>(kMaxSweepCells)) +
                       "; split it into several configs");
   }
+}
+
+}  // namespace
+
+SweepConfig LoadSweepConfig(const std::string& path) {
+  if (!std::filesystem::exists(path)) {
+    throw std::runtime_error(path + ": cannot open config (missing or unreadable)");
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& error) {
+    Fail(path, error.mark.line + 1, "invalid YAML: " + error.msg);
+  }
+  if (!root.IsMap()) Fail(path, 1, "a sweep config must be a mapping (name:, datasets:, ...)");
+  CheckKeys(path, root, "the config",
+            {"name", "repetitions", "seed", "parallel_cells", "threads_per_cell",
+             "ground_truth_samples", "feature_band", "save_clouds", "reconstructions",
+             "datasets", "noise", "methods"});
+  SweepConfig config;
+  config.path = path;
+  LoadSettings(path, root, &config);
+  LoadReconstructions(path, root, &config);
+  LoadDatasets(path, root, &config);
+  LoadNoise(path, root, &config);
+  LoadMethods(path, root, &config);
+  CheckCellCount(path, config);
   return config;
 }
 
