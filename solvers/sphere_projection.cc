@@ -21,6 +21,46 @@ energy::Point3 OnPlane(const energy::Point3& p, const Eigen::Vector4d& t) {
   return projected;
 }
 
+// Weighted sums over a neighbourhood's anchors x and unit normals n: sum w, w x, w n, w x.n
+// and w |x|^2.
+struct WeightedMoments {
+  double sw;
+  Eigen::Vector3d sx, snrm;
+  double sxn, sxx;
+};
+
+// Fits the algebraic sphere u0 + u.x + u4 |x|^2 to the moments (APSS closed form: u4 from
+// the spread of x.n against |x|^2, then u, then u0) and moves p onto it. `ni` orients the
+// normal; a vanishing u4 (relative to the neighbourhood's reach^2) means a plane, and a fit
+// without a real sphere falls back to the plane t_i.
+void ProjectOntoFittedSphere(const WeightedMoments& m, const Eigen::Vector3d& p,
+                             const Eigen::Vector3d& ni, double reach, const Eigen::Vector4d& ti,
+                             Eigen::Vector3d* projected, Eigen::Vector3d* normal) {
+  const double sw = m.sw, sxn = m.sxn, sxx = m.sxx;
+  const Eigen::Vector3d mean_x = m.sx / sw;
+  const Eigen::Vector3d mean_n = m.snrm / sw;
+  const double spread = sxx / sw - mean_x.squaredNorm();
+  const double u4 = spread > 1e-300 ? 0.5 * (sxn / sw - mean_x.dot(mean_n)) / spread : 0.0;
+  const Eigen::Vector3d u = mean_n - 2.0 * u4 * mean_x;
+  const double u0 = -u.dot(mean_x) - u4 * sxx / sw;
+  if (std::abs(u4) * std::sqrt(reach) < 1e-9 * u.norm()) {  // a plane: u0 + u.x = 0
+    *normal = u.normalized();
+    *projected = p - *normal * ((u.dot(p) + u0) / u.norm());
+    return;
+  }
+  const Eigen::Vector3d center = -u / (2.0 * u4);
+  const double radius2 = center.squaredNorm() - u0 / u4;
+  const Eigen::Vector3d offset = p - center;
+  if (radius2 <= 0.0 || offset.squaredNorm() == 0.0) {
+    *projected = OnPlane(p, ti);
+    *normal = ni;
+    return;
+  }
+  *normal = offset.normalized();
+  *projected = center + std::sqrt(radius2) * *normal;
+  if (normal->dot(ni) < 0.0) *normal = -*normal;
+}
+
 }  // namespace
 
 void ProjectOntoLocalSpheres(const energy::Problem& problem, const energy::Variables& v,
@@ -78,30 +118,9 @@ void ProjectOntoLocalSpheres(const energy::Problem& problem, const energy::Varia
       sxn += w * x.dot(nj);
       sxx += w * x.squaredNorm();
     }
-    // APSS closed form: u4 from the spread of x.n against |x|^2, then u, then u0.
-    const Eigen::Vector3d mean_x = sx / sw;
-    const Eigen::Vector3d mean_n = snrm / sw;
-    const double spread = sxx / sw - mean_x.squaredNorm();
-    const double u4 = spread > 1e-300 ? 0.5 * (sxn / sw - mean_x.dot(mean_n)) / spread : 0.0;
-    const Eigen::Vector3d u = mean_n - 2.0 * u4 * mean_x;
-    const double u0 = -u.dot(mean_x) - u4 * sxx / sw;
     Eigen::Vector3d projected, normal;
-    if (std::abs(u4) * std::sqrt(reach) < 1e-9 * u.norm()) {  // a plane: u0 + u.x = 0
-      normal = u.normalized();
-      projected = p - normal * ((u.dot(p) + u0) / u.norm());
-    } else {
-      const Eigen::Vector3d center = -u / (2.0 * u4);
-      const double radius2 = center.squaredNorm() - u0 / u4;
-      const Eigen::Vector3d offset = p - center;
-      if (radius2 <= 0.0 || offset.squaredNorm() == 0.0) {
-        projected = OnPlane(p, v.t.row(i).transpose());
-        normal = ni;
-      } else {
-        normal = offset.normalized();
-        projected = center + std::sqrt(radius2) * normal;
-        if (normal.dot(ni) < 0.0) normal = -normal;
-      }
-    }
+    ProjectOntoFittedSphere(WeightedMoments{sw, sx, snrm, sxn, sxx}, p, ni, reach,
+                            v.t.row(i).transpose(), &projected, &normal);
     (*points)[i] = problem.frame.ToInput(projected);
     (*normals)[i] = normal;
   }
