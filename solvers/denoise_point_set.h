@@ -18,8 +18,8 @@
 #include "solvers/alternating_minimizer.h"
 #include "solvers/ceres_joint_solver.h"
 #include "solvers/final_denoising.h"
-#include "solvers/neighborhood_size.h"
 #include "solvers/initial_state.h"
+#include "solvers/neighborhood_size.h"
 #include "solvers/solver_summary.h"
 
 namespace lpd::solvers {

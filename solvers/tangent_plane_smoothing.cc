@@ -4,8 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "solvers/parse_by_name.h"
 #include "energy/row_sum.h"
+#include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
 

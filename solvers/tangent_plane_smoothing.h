@@ -21,8 +21,8 @@
 #include "energy/energy_parameters.h"
 #include "energy/problem.h"
 #include "energy/variables.h"
-#include "solvers/compressed_rows.h"
-#include "solvers/multilevel_preconditioner.h"
+#include "solvers/linear/compressed_rows.h"
+#include "solvers/linear/multilevel_preconditioner.h"
 
 namespace lpd::solvers {
 

@@ -3,7 +3,7 @@
 // sphere: on a coarsely sampled sphere bilateral smoothing drifts outward and WLOP inward
 // (mean radial offsets +0.016 and -0.016 at 3,000 points), biases of the methods that would
 // hide whether they remove noise.
-#include "experiments/cgal_baselines.h"
+#include "experiments/baselines/cgal_baselines.h"
 
 #include <stdexcept>
 

@@ -1,11 +1,11 @@
 // The flags of `lpd denoise` and the sweep keys are one set of parameters with one set of
 // defaults: every flag's default is the default DenoiseOptions' value, and flags given on
 // the command line win over a preset.
-#include "experiments/denoise_flags.h"
+#include "experiments/cli/denoise_flags.h"
 
 #include <gtest/gtest.h>
 
-#include "experiments/denoise_parameters.h"
+#include "experiments/sweep/denoise_parameters.h"
 #include "solvers/presets.h"
 
 namespace lpd::experiments {

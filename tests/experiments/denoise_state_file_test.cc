@@ -1,6 +1,6 @@
 // Warm restart: a run saved after some iterations and resumed from the file must be the same
 // bit for bit as the uninterrupted run; broken files must be rejected with a reason.
-#include "experiments/denoise_state_file.h"
+#include "experiments/sweep/denoise_state_file.h"
 
 #include <unistd.h>
 
@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/denoise_parameters.h"
+#include "experiments/sweep/denoise_parameters.h"
 #include "test_problems.h"
 
 namespace lpd::experiments {

@@ -1,12 +1,12 @@
 // Metrics on hand-made cases with answers computed by hand.
-#include "experiments/metrics.h"
+#include "experiments/evaluation/metrics.h"
 
 #include <cmath>
 #include <memory>
 
 #include <gtest/gtest.h>
 
-#include "experiments/shape_catalog.h"
+#include "experiments/shapes/shape_catalog.h"
 
 namespace lpd::experiments {
 namespace {

@@ -1,13 +1,13 @@
 // Noise models: the measured sigma is the requested one, normal noise stays on the normal,
 // varying noise varies as stated, outliers are counted, placed and labelled, and the FPS
 // diameter agrees with brute force.
-#include "experiments/noise.h"
+#include "experiments/shapes/noise.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "experiments/shape_catalog.h"
+#include "experiments/shapes/shape_catalog.h"
 
 namespace lpd::experiments {
 namespace {

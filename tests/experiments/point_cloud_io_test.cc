@@ -1,5 +1,5 @@
 // Readers and writers: round trips, every format, and clear errors on bad files.
-#include "experiments/point_cloud_io.h"
+#include "experiments/io/point_cloud_io.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/atomic_output_file.h"
+#include "experiments/io/atomic_output_file.h"
 
 namespace lpd::experiments {
 namespace {

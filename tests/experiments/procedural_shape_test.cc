@@ -1,6 +1,6 @@
 // Procedural shapes: samples on the surface, exact distances against closed forms and brute
 // force, area-uniform sampling (chi-square), feature distances, and spec parsing.
-#include "experiments/procedural_shape.h"
+#include "experiments/shapes/procedural_shape.h"
 
 #include <cmath>
 #include <limits>
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/shape_catalog.h"
-#include "experiments/triangle_mesh.h"
+#include "experiments/shapes/shape_catalog.h"
+#include "experiments/shapes/triangle_mesh.h"
 
 namespace lpd::experiments {
 namespace {

@@ -1,7 +1,7 @@
 // The neutral reconstructions: on clean samples of a sphere both make a closed surface
 // through the samples whose area matches the sphere's, and meshes written as OFF or PLY read
 // back identical.
-#include "experiments/surface_reconstruction.h"
+#include "experiments/baselines/surface_reconstruction.h"
 
 #include <cmath>
 #include <filesystem>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/shape_catalog.h"
+#include "experiments/shapes/shape_catalog.h"
 
 namespace lpd::experiments {
 namespace {

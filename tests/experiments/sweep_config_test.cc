@@ -1,6 +1,6 @@
 // Sweep configs: grids expand as cartesian products, errors name the file and line, results
 // round-trip through JSON, a rerun skips finished cells, and saved clouds carry distances.
-#include "experiments/sweep_config.h"
+#include "experiments/sweep/sweep_config.h"
 
 #include <cmath>
 #include <filesystem>
@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/point_cloud_io.h"
-#include "experiments/sweep_results.h"
-#include "experiments/sweep_runner.h"
+#include "experiments/io/point_cloud_io.h"
+#include "experiments/sweep/sweep_results.h"
+#include "experiments/sweep/sweep_runner.h"
 
 namespace lpd::experiments {
 namespace {

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "experiments/point_cloud_io.h"
+#include "experiments/io/point_cloud_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/noise.h"
-#include "experiments/shape_catalog.h"
+#include "experiments/shapes/noise.h"
+#include "experiments/shapes/shape_catalog.h"
 #include "solvers/denoise_point_set.h"
 #include "solvers/presets.h"
 #include "solvers/residual_statistics.h"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/noise.h"
-#include "experiments/shape_catalog.h"
+#include "experiments/shapes/noise.h"
+#include "experiments/shapes/shape_catalog.h"
 #include "solvers/presets.h"
 #include "test_problems.h"
 

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/mesh_distance.h"
-#include "experiments/point_cloud_io.h"
+#include "experiments/evaluation/mesh_distance.h"
+#include "experiments/io/point_cloud_io.h"
 #include "solvers/denoise_point_set.h"
 
 namespace lpd::solvers {

@@ -1,7 +1,7 @@
 // Galerkin coarsening against dense products, the V-cycle against its operator built densely
 // from the recursion, and the cycle as a CG preconditioner against Jacobi.
-#include "solvers/multilevel_preconditioner.h"
-#include "solvers/aggregation.h"
+#include "solvers/linear/aggregation.h"
+#include "solvers/linear/multilevel_preconditioner.h"
 
 #include <algorithm>
 #include <array>

@@ -1,0 +1,25 @@
+// MeshGroundTruth (declared in ground_truth.h): CGAL-backed, so it lives in lpd_cgal.
+#include <sstream>
+
+#include "experiments/evaluation/ground_truth.h"
+#include "experiments/evaluation/mesh_distance.h"
+
+namespace lpd::experiments {
+
+GroundTruth MeshGroundTruth(const TriangleMesh& mesh, const std::string& name, int num_samples,
+                            uint64_t seed) {
+  auto distance = std::make_shared<const MeshDistance>(mesh);
+  GroundTruth truth;
+  std::ostringstream description;
+  description << name << " (" << mesh.triangles.size() << " triangles), " << num_samples
+              << " samples, seed " << seed;
+  truth.description = description.str();
+  truth.samples = SampleTriangleMesh(mesh, num_samples, seed).points;
+  truth.diagonal = distance->BoundingBoxDiagonal();
+  truth.surface_distances = [distance](const energy::PointList& points, int num_threads) {
+    return distance->Distances(points, num_threads);
+  };
+  return truth;
+}
+
+}  // namespace lpd::experiments
