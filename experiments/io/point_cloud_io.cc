@@ -172,7 +172,9 @@ PointList ReadOff(const std::string& path, std::istream& in) {
   }
   if (num_vertices < 0) Fail(path, number, "malformed vertex/face counts");
   PointList points;
-  points.reserve(num_vertices);
+  // The header's count is a claim, not a size to allocate (found by the OFF fuzzer: a count
+  // of 2.7e15 asked for 64 PB); past this, the list grows as vertices arrive.
+  points.reserve(std::min<long>(num_vertices, 1 << 20));
   for (long v = 0; v < num_vertices; ++v) {
     if (!NextContentLine(path, in, &line, &number)) {
       Fail(path, number, "file ends after " + std::to_string(v) + " of " +
@@ -263,13 +265,16 @@ uint64_t SmallestItemBytes(const PlyElement& element, PlyFormat format) {
 // more bytes than the body has, before anything is allocated for them.
 void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
                            const std::vector<PlyElement>& elements, std::istream* in) {
-  const std::streampos body_start = in->tellg();
-  in->seekg(0, std::ios::end);
-  const std::streampos end = in->tellg();
-  in->clear();
-  in->seekg(body_start);
-  if (body_start < 0 || end < body_start) return;  // not seekable: the reads check as they go
-  const uint64_t body_bytes = static_cast<uint64_t>(end - body_start);
+  uint64_t body_bytes = 0;  // a header that ends the file leaves an empty body
+  if (!in->eof()) {
+    const std::streampos body_start = in->tellg();
+    in->seekg(0, std::ios::end);
+    const std::streampos end = in->tellg();
+    in->clear();
+    in->seekg(body_start);
+    if (body_start < 0 || end < body_start) return;  // not seekable: the reads check as they go
+    body_bytes = static_cast<uint64_t>(end - body_start);
+  }
   uint64_t needed = 0;
   for (const PlyElement& element : elements) {
     const uint64_t item = SmallestItemBytes(element, format);
@@ -436,6 +441,7 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
   for (const PlyElement& element : header.elements) {
     std::vector<double> values(element.properties.size());
     if (element.name != "vertex") {
+      if (element.properties.empty()) continue;  // nothing to read, however many items
       for (long item = 0; item < element.count; ++item) {
         ReadPlyItem(path, in, header.format, element, item, &number, &values);
       }
