@@ -10,9 +10,7 @@ seconds=${1:-600}
 shift || true
 formats=("$@")
 [ ${#formats[@]} -gt 0 ] || formats=(xyz ply off obj)
-command -v clang++ >/dev/null || { echo "fuzz.sh: needs clang++ (apt-get install clang)" >&2; exit 1; }
-[ -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ] ||
-  echo "fuzz.sh: libFuzzer may be missing (apt-get install libfuzzer-14-dev)" >&2
+bash scripts/install_deps.sh clang libfuzzer-14-dev
 CXX=clang++ CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLPD_FUZZ=ON \
   >/dev/null
 targets=()

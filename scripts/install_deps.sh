@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs lpd's build and test dependencies from Debian 12 packages, only those missing.
-# Usage: scripts/install_deps.sh    (uses sudo when not root)
+# Usage: scripts/install_deps.sh [EXTRA_PACKAGE...]   (uses sudo when not root; extra
+# packages, e.g. clang libfuzzer-14-dev for scripts/fuzz.sh, are installed too)
 set -euo pipefail
 
 packages=(
@@ -8,6 +9,7 @@ packages=(
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   libnanoflann-dev libgtest-dev libbenchmark-dev libcgal-dev libyaml-cpp-dev
   python3 python3-matplotlib python3-numpy time
+  "$@"
 )
 
 missing=()
