@@ -21,15 +21,7 @@ expect_error() {
 
 # expect_finite NAME FILE [FLAGS...]: the run must succeed and write only finite coordinates.
 expect_finite() {
-  local name=$1 input=$2
-  shift 2
-  local out="$dir/out_$name.xyz"
-  if ! "$lpd" denoise "$input" -o "$out" --k=8 --quiet "$@" >"$dir/stdout" 2>"$dir/stderr"; then
-    fail "$name: failed: $(cat "$dir/stderr")"
-    return
-  fi
-  grep -qiE 'nan|inf' "$out" && fail "$name: non-finite output"
-  echo "ok   $name: $(wc -l <"$out") finite points"
+  denoise_finite "$1" "$2" --k=8 "${@:3}" && echo "ok   $1: $finite_count finite points"
 }
 
 python3 - "$dir" <<'PY'

@@ -29,15 +29,8 @@ refuse() {
 
 # accept NAME INPUT [FLAGS...]: lpd denoise INPUT succeeds with finite output.
 accept() {
-  local name=$1 input=$2; shift 2
   cases=$((cases + 1))
-  local out="$dir/out_$name.xyz"
-  if ! timeout 120 "$lpd" denoise "$input" -o "$out" --quiet "$@" >"$dir/stdout" 2>"$dir/stderr"; then
-    fail "$name: failed: $(tail -1 "$dir/stderr")"
-    return
-  fi
-  grep -qiE 'nan|inf' "$out" && fail "$name: non-finite output"
-  echo "| $name | 0 | accepted: $(wc -l <"$out") finite points |"
+  denoise_finite "$@" && echo "| $1 | 0 | accepted: $finite_count finite points |"
 }
 
 python3 - "$dir" <<'PY'
