@@ -1,12 +1,12 @@
-"""Tables and plots of the ablation configs (issue 5), called by make_all.py.
+"""Tables and plots of the ablation configs (configs/ablation_*.yaml), called by make_all.py.
 
 Each function reads results/<config>/results.csv or .jsonl as written by `lpd sweep` and
 writes out/<config>.md (and .png); a config without results is skipped with a message.
 """
 import math
 
-import make_all as common
-from make_all import label, plt, save_plot, table, write
+import figure_common as common
+from figure_common import label, plt, save_plot, table, write
 from render_clouds import read_records
 
 QUALITY = [("MSE (1e-5)", "mse_normalized", 1e-5, 3),

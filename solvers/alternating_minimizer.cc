@@ -1,6 +1,5 @@
 #include "solvers/alternating_minimizer.h"
 
-#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -8,19 +7,11 @@
 #include "energy/energy.h"
 #include "energy/fitting_term.h"
 #include "energy/smoothness_term.h"
+#include "energy/wall_clock.h"
 #include "solvers/local_plane_fit.h"
 #include "solvers/residual_statistics.h"
 
 namespace lpd::solvers {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-}  // namespace
 
 bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
   if (!energy.IsValid(error) || !linear_solver.IsValid(error)) return false;

@@ -17,16 +17,11 @@
 #include "energy/fitting_term.h"
 #include "energy/smoothness_term.h"
 #include "energy/stitching_term.h"
+#include "energy/wall_clock.h"
 #include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 constexpr ceres::LinearSolverType kSupportedLinearSolvers[] = {
     ceres::SPARSE_SCHUR, ceres::ITERATIVE_SCHUR, ceres::SPARSE_NORMAL_CHOLESKY, ceres::CGNR};

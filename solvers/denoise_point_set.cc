@@ -1,6 +1,5 @@
 #include "solvers/denoise_point_set.h"
 
-#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
@@ -8,6 +7,7 @@
 #include <unistd.h>
 
 #include "energy/spatial_order.h"
+#include "energy/wall_clock.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
 #include "solvers/sphere_projection.h"
@@ -86,7 +86,6 @@ bool DenoiseOptions::IsValid(std::string* error) const {
 
 DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOptions& options,
                             const energy::PointList* normals) {
-  using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
@@ -106,7 +105,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
   CheckFitsInMemory(static_cast<int>(points.size()), problem_options.k);
   state.problem = energy::BuildProblem(ordered_points, problem_options, threads);
   state.neighborhood.k = state.problem.k();
-  state.setup_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  state.setup_seconds = SecondsSince(start);
   energy::PointList ordered_normals;
   if (normals) ordered_normals = ToProblemOrder(*normals, state.order);
   state.variables = InitialState(state.problem, options.minimizer.energy,
@@ -251,13 +250,12 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
                               const IterationCallback& callback,
                               const energy::PointList* normals) {
-  using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   DenoiseState state = StartDenoising(points, options, normals);
   SolverSummary summary = MinimizeFromState(options, &state, callback);
   DenoiseResult result = RerunWithoutOutliers(
       points, options, FinishDenoising(state, options, std::move(summary)), callback, normals);
-  result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.total_seconds = SecondsSince(start);
   return result;
 }
 

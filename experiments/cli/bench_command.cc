@@ -2,7 +2,6 @@
 // (read, k-NN, optimize, project). Runs all --max_iters iterations (no early stop) and does
 // not evaluate the energy between blocks, so the figures are the method's own cost.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
@@ -11,6 +10,7 @@
 
 #include "energy/data_scaled_weights.h"
 #include "energy/term_balance.h"
+#include "energy/wall_clock.h"
 #include "experiments/cli/commands.h"
 #include "experiments/cli/denoise_flags.h"
 #include "experiments/io/peak_memory.h"
@@ -30,13 +30,12 @@ double Median(std::vector<double> values) {
 
 int RunBenchCommand(const std::vector<std::string>& arguments) {
   if (arguments.size() != 1) throw std::invalid_argument("bench takes one INPUT file");
-  using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
   options.minimizer.energy_tolerance = 0.0;
   options.minimizer.trace_blocks = false;
   const energy::PointList points = ReadPoints(arguments[0]);
-  const double read_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const double read_seconds = SecondsSince(start);
   solvers::DenoiseState state = solvers::StartDenoising(points, options);
   const double balance = energy::MedianSmoothnessToStitchingRatio(
       state.problem,
@@ -44,7 +43,7 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
   solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state);
   const solvers::DenoiseResult result =
       solvers::FinishDenoising(state, options, std::move(summary));
-  const double total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const double total_seconds = SecondsSince(start);
 
   std::printf("input %s: n = %zu, k = %d, threads = %d, %d outer x %d inner iterations\n",
               arguments[0].c_str(), points.size(), state.problem.k(),

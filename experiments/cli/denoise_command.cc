@@ -1,7 +1,6 @@
 // lpd denoise [INPUT] -o OUTPUT [flags]: the paper's method on a file, or on a built-in
 // noisy box when no INPUT is given; --save-state / --resume stop and continue a run.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +10,7 @@
 #include <gflags/gflags.h>
 
 #include "experiments/cli/commands.h"
+#include "energy/wall_clock.h"
 #include "experiments/cli/denoise_flags.h"
 #include "experiments/io/atomic_output_file.h"
 #include "experiments/io/interruption.h"
@@ -255,7 +255,6 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   }
   CheckOutputs(resume ? FLAGS_resume : arguments.empty() ? "" : arguments[0], resume);
 
-  using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   DenoiseInput input;
   if (!resume) {
@@ -276,7 +275,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
                                            input.normals_or_null());
   }
   ThrowIfInterrupted();
-  result.total_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.total_seconds = SecondsSince(start);
   if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
 
   const PointCloud cloud = MakeOutputCloud(result);

@@ -1,11 +1,11 @@
 // lpd reconstruct INPUT -o MESH.off: the paper's neutral interpolating reconstruction of a
 // (denoised) point set, for renderings like Figs. 1 and 12-14.
-#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
 #include <gflags/gflags.h>
 
+#include "energy/wall_clock.h"
 #include "experiments/baselines/surface_reconstruction.h"
 #include "experiments/cli/commands.h"
 #include "experiments/io/atomic_output_file.h"
@@ -34,10 +34,10 @@ int RunReconstructCommand(const std::vector<std::string>& arguments) {
   options.method = ParseReconstruction(FLAGS_reconstruction);
   options.scale_iterations = FLAGS_scale_iterations;
   const PointCloud cloud = ReadPointCloud(arguments[0]);
-  const auto start = std::chrono::steady_clock::now();
+  const Clock::time_point start = Clock::now();
   const TriangleMesh mesh = ReconstructSurface(cloud.points, options);
   const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      SecondsSince(start);
   WriteTriangleMesh(FLAGS_output, mesh, FLAGS_overwrite);
   std::printf("%s: %zu points, %zu triangles, %.2f s\nwrote %s\n",
               ToString(options.method).c_str(), mesh.vertices.size(), mesh.triangles.size(),
