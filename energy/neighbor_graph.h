@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::energy {
 

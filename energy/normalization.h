@@ -7,15 +7,9 @@
 #ifndef LPD_ENERGY_NORMALIZATION_H_
 #define LPD_ENERGY_NORMALIZATION_H_
 
-#include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>  // cross products of Point3
+#include "energy/point3.h"
 
 namespace lpd::energy {
-
-using Point3 = Eigen::Vector3d;
-using PointList = std::vector<Point3>;
 
 struct Frame {
   Point3 center = Point3::Zero();  // c: centroid of the input.

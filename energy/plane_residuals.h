@@ -14,7 +14,7 @@
 #include <ceres/sized_cost_function.h>
 #include <Eigen/Core>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::energy {
 

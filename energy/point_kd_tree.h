@@ -5,7 +5,7 @@
 
 #include <nanoflann.hpp>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::energy {
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::energy {
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "energy/data_scaled_weights.h"
-#include "energy/normalization.h"
+#include "energy/point3.h"
 #include "energy/problem.h"
 #include "solvers/alternating_minimizer.h"
 #include "solvers/ceres_joint_solver.h"

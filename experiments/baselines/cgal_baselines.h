@@ -17,7 +17,7 @@
 
 #include <string>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::experiments {
 

@@ -7,7 +7,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::experiments::cgal {
 

@@ -14,7 +14,7 @@
 
 #include <string>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 #include "experiments/shapes/triangle_mesh.h"
 
 namespace lpd::experiments {

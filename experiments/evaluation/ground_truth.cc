@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "energy/normalization.h"
+
 namespace lpd::experiments {
 
 GroundTruth ShapeGroundTruth(std::shared_ptr<const ProceduralShape> shape, int num_samples,

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 #include "experiments/shapes/procedural_shape.h"
 #include "experiments/shapes/triangle_mesh.h"
 

@@ -8,6 +8,8 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include "energy/normalization.h"
+
 namespace lpd::experiments {
 namespace {
 

@@ -1,6 +1,7 @@
-// MeshGroundTruth (declared in ground_truth.h): CGAL-backed, so it lives in lpd_cgal.
+// MeshGroundTruth (declared in ground_truth.h): CGAL-backed, so a translation unit of its own.
 #include <sstream>
 
+#include "energy/normalization.h"
 #include "experiments/evaluation/ground_truth.h"
 #include "experiments/evaluation/mesh_distance.h"
 

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 #include "experiments/evaluation/ground_truth.h"
 
 namespace lpd::experiments {

@@ -5,7 +5,7 @@
 #ifndef LPD_EXPERIMENTS_SHAPES_FEATURE_CURVES_H_
 #define LPD_EXPERIMENTS_SHAPES_FEATURE_CURVES_H_
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::experiments {
 

@@ -4,6 +4,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "energy/normalization.h"
+
 namespace lpd::experiments {
 
 using energy::Point3;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 #include "experiments/shapes/feature_curves.h"
 #include "experiments/shapes/surface_patches.h"
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "energy/normalization.h"
+#include "energy/point3.h"
 
 namespace lpd::experiments {
 

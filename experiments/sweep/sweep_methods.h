@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "energy/energy.h"
-#include "energy/normalization.h"
+#include "energy/point3.h"
 #include "experiments/sweep/sweep_config.h"
 
 namespace lpd::experiments {

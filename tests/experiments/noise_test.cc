@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "energy/normalization.h"
 #include "experiments/shapes/shape_catalog.h"
 
 namespace lpd::experiments {

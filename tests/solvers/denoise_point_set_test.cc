@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "energy/normalization.h"
 #include "experiments/shapes/noise.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "solvers/presets.h"

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "energy/normalization.h"
 #include "experiments/evaluation/mesh_distance.h"
 #include "experiments/io/point_cloud_io.h"
 #include "solvers/denoise_point_set.h"
