@@ -43,7 +43,7 @@ GroundTruth PointSetGroundTruth(energy::PointList points, const std::string& des
 
 // A triangle mesh (read with ReadTriangleMesh; `name` says where it came from): dense
 // area-uniform samples plus exact distances with CGAL's AABB tree. Implemented in
-// mesh_ground_truth.cc (library lpd_cgal).
+// mesh_ground_truth.cc (the CGAL translation unit of lpd_evaluation).
 GroundTruth MeshGroundTruth(const TriangleMesh& mesh, const std::string& name,
                             int num_samples = kGroundTruthSamples,
                             uint64_t seed = kGroundTruthSeed);
