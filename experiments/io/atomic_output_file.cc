@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "experiments/io/interruption.h"
@@ -33,10 +34,15 @@ void RefuseExistingOutput(const std::string& path, bool overwrite) {
     throw std::runtime_error("cannot write " + path + ": directory " + directory.string() +
                              " does not exist");
   }
-  if (::access(directory.c_str(), W_OK) != 0) {
+  // Creating a file is the only test that also holds for root and read-only file systems.
+  const std::string probe = (directory / (".lpd_probe." + std::to_string(::getpid()))).string();
+  const int descriptor = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  if (descriptor < 0) {
     throw std::runtime_error("cannot write " + path + ": directory " + directory.string() +
-                             " is not writable");
+                             " is not writable (" + std::strerror(errno) + ")");
   }
+  ::close(descriptor);
+  ::unlink(probe.c_str());
 }
 
 AtomicOutputFile::AtomicOutputFile(const std::string& path, bool overwrite) : path_(path) {

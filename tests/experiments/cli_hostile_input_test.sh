@@ -134,6 +134,14 @@ if [ "$unreadable" -eq 1 ]; then
 fi
 # Outputs.
 refuse output_dir_missing 1 denoise "$dir/plain.xyz" -o "$dir/no/such/dir/out.ply"
+mkdir -p "$dir/read_only"
+chmod 555 "$dir/read_only"
+if [ ! -w "$dir/read_only" ]; then  # root writes anyway; then try a read-only file system
+  refuse output_dir_read_only 1 denoise "$dir/plain.xyz" -o "$dir/read_only/out.ply"
+elif [ -d /sys ] && ! touch /sys/lpd_probe 2>/dev/null; then
+  refuse output_on_read_only_file_system 1 denoise "$dir/plain.xyz" -o /sys/out.ply
+fi
+chmod 755 "$dir/read_only"
 refuse output_is_a_directory 1 denoise "$dir/plain.xyz" -o "$dir/out_dir.ply" --overwrite
 refuse output_is_the_input 1 denoise "$dir/same.xyz" -o "$dir/same.xyz" --overwrite
 # A full disk, as the file-size limit: the write fails, lpd says so, nothing is left.

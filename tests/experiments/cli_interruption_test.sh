@@ -2,8 +2,8 @@
 # SIGINT / SIGTERM during real runs:
 # - a denoise stopped mid-iteration exits 130 (143 for SIGTERM) within about a second, says
 #   so in one line, and leaves neither the output nor a temporary file;
-# - a denoise stopped inside a stage without iterations (the k-NN build) does the same through
-#   the watchdog;
+# - a denoise stopped inside a stage without iterations (the k-NN build), and a reconstruction,
+#   do the same through the watchdog;
 # - a sweep stopped after its first cell exits 143, its CSV holds exactly the finished cells,
 #   and a rerun resumes: it runs only the rest and ends with one row per cell.
 # Usage: cli_interruption_test.sh PATH_TO_LPD
@@ -59,6 +59,8 @@ grep -q "lpd denoise: interrupted by SIGINT; no output written" \
 interrupt denoise_sigint INT 130 "^iter  2" denoise "$dir/big.xyz" -o out.ply
 interrupt denoise_sigterm TERM 143 "^iter  1" denoise "$dir/big.xyz" -o out.xyz --threads=1
 interrupt denoise_sigint_in_knn INT 130 "" denoise "$dir/big.xyz" -o out.ply --quiet
+# A CGAL reconstruction has no iterations to stop at: the watchdog ends it.
+interrupt reconstruct_sigterm TERM 143 "" reconstruct "$dir/big.xyz" -o out.off
 
 # A sweep of four cells, one at a time: stop it after the first, then resume.
 cat >"$dir/sweep.yaml" <<'YAML'
