@@ -18,7 +18,8 @@ refuse() {
   local code=$?
   local lines message
   lines=$(wc -l <"$dir/$name/stderr")
-  message=$(head -c 300 "$dir/$name/stderr" | tr -d '\n' | tr '|' '/')
+  message=$(head -c 300 "$dir/$name/stderr" | tr -d '\n' | LC_ALL=C tr -c '[:print:]' '?' |
+            tr '|' '/')
   [ "$code" -eq "$expected" ] || fail "$name: exit code $code, expected $expected: $message"
   [ "$lines" -eq 1 ] || fail "$name: $lines stderr lines: $(cat "$dir/$name/stderr")"
   local left
