@@ -14,7 +14,7 @@
 namespace lpd::solvers {
 
 bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
-  if (!energy.IsValid(error) || !linear_solver.IsValid(error)) return false;
+  if (!linear_solver.IsValid(error)) return false;
   std::ostringstream out;
   if (max_iterations < 1) {
     out << "max_iters must be >= 1, got " << max_iterations;
@@ -24,12 +24,8 @@ bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
     out << "energy_tolerance must be finite and >= 0, got " << energy_tolerance;
   } else if (energy_window < 1) {
     out << "energy_window must be >= 1, got " << energy_window;
-  } else if (!(mu_l_noise_sigmas >= 0.0) || !std::isfinite(mu_l_noise_sigmas)) {
-    out << "mu_l_noise_sigmas must be finite and >= 0, got " << mu_l_noise_sigmas;
   } else if (!gnc.IsValid(error)) {
     return false;
-  } else if (num_threads < 1) {
-    out << "threads must be >= 1, got " << num_threads;
   } else {
     return true;
   }
@@ -43,14 +39,16 @@ namespace {
 // block timing and tracing, graduated non-convexity and the stopping rule kept apart.
 class AlternatingRun {
  public:
-  AlternatingRun(const energy::Problem& problem, const AlternatingMinimizer::Options& options,
-                 energy::Variables* v, MinimizerProgress* state)
+  AlternatingRun(const energy::Problem& problem, const SolverSettings& settings,
+                 const AlternatingMinimizer::Options& options, energy::Variables* v,
+                 MinimizerProgress* state)
       : problem_(problem),
+        settings_(settings),
         options_(options),
         v_(v),
         state_(*state),
-        threads_(options.num_threads),
-        parameters_(options.energy),
+        threads_(settings.num_threads),
+        parameters_(settings.energy),
         smoother_(problem) {
     // The energy of Eq. (5) at the target selectivities; mu_l may still be replaced by the
     // scale-aware value at the first local step.
@@ -120,8 +118,8 @@ class AlternatingRun {
       return -1;
     }).seconds;
     if (std::isnan(state_.mu_l)) {
-      if (options_.mu_l_noise_sigmas > 0.0) {
-        parameters_.mu_l = NoiseScaledMuL(problem_, *v_, options_.mu_l_noise_sigmas);
+      if (settings_.mu_l_noise_sigmas > 0.0) {
+        parameters_.mu_l = NoiseScaledMuL(problem_, *v_, settings_.mu_l_noise_sigmas);
       }
       state_.mu_l = parameters_.mu_l;
     }
@@ -238,14 +236,15 @@ class AlternatingRun {
     std::ostringstream out;
     out << summary_.message << "; the output points moved " << std::setprecision(2) << motion
         << " of the diagonal (RMS) in the last one";
-    if (options_.mu_l_noise_sigmas > 0.0) {
-      const double sigma = std::sqrt(parameters_.mu_l) / options_.mu_l_noise_sigmas;
+    if (settings_.mu_l_noise_sigmas > 0.0) {
+      const double sigma = std::sqrt(parameters_.mu_l) / settings_.mu_l_noise_sigmas;
       out << ", " << motion / sigma << " noise sigma";
     }
     summary_.message = out.str();
   }
 
   const energy::Problem& problem_;
+  const SolverSettings& settings_;
   const AlternatingMinimizer::Options& options_;
   energy::Variables* v_;
   MinimizerProgress& state_;
@@ -260,13 +259,16 @@ class AlternatingRun {
 }  // namespace
 
 SolverSummary AlternatingMinimizer::Minimize(const energy::Problem& problem,
+                                             const SolverSettings& settings,
                                              const Options& options, energy::Variables* v,
                                              const IterationCallback& callback,
                                              MinimizerProgress* progress) {
   SolverSummary summary;
-  if (!options.IsValid(&summary.message)) return summary;
+  if (!settings.IsValid(&summary.message) || !options.IsValid(&summary.message)) {
+    return summary;
+  }
   MinimizerProgress local_progress;
-  return AlternatingRun(problem, options, v, progress ? progress : &local_progress)
+  return AlternatingRun(problem, settings, options, v, progress ? progress : &local_progress)
       .Run(callback);
 }
 

@@ -22,6 +22,7 @@
 #include "energy/problem.h"
 #include "energy/variables.h"
 #include "solvers/graduated_nonconvexity.h"
+#include "solvers/solver_settings.h"
 #include "solvers/solver_summary.h"
 #include "solvers/tangent_plane_smoothing.h"
 
@@ -43,10 +44,8 @@ struct MinimizerProgress {
 
 class AlternatingMinimizer {
  public:
+  // Alg. 1's own settings; the energy and threads come in SolverSettings.
   struct Options {
-    // ---- energy (Eq. 5, Table 2) ----
-    energy::EnergyParameters energy;
-
     // ---- schedule (Alg. 1) ----
     // Outer iterations at most (maxIter of Alg. 1; the reference implementation runs 5).
     int max_iterations = 50;
@@ -60,10 +59,6 @@ class AlternatingMinimizer {
     int energy_window = 3;
     // Alg. 1 line 16 (Eq. 8); false holds every s_ij at 1, the ablation of Fig. 4.
     bool optimize_orientations = true;
-    // When > 0, mu_l = (c sigma)^2 with c = mu_l_noise_sigmas and sigma the robust residual
-    // scale (residual_statistics.h) after the first local step, replacing energy.mu_l. With
-    // c = 3, a residual of one sigma keeps l = 0.81 and one of three sigma l = 0.25 (Eq. 6).
-    double mu_l_noise_sigmas = 4.0;
     // Continuation of mu_l and/or mu_m toward their targets; its stages come before, and
     // count toward, max_iterations. The convergence test only looks at iterations run at the
     // targets, and energies are always those of Eq. (5) at the targets.
@@ -73,7 +68,6 @@ class AlternatingMinimizer {
     LinearSolverOptions linear_solver;
 
     // ---- execution ----
-    int num_threads = 1;
     // Evaluate and record the energy after every block update (costs about one pass over
     // the data per block); when false only the energy per outer iteration is recorded.
     bool trace_blocks = true;
@@ -84,7 +78,8 @@ class AlternatingMinimizer {
   // Runs Alg. 1 from the state in `v` (use energy::InitialVariables for lines 2-5), for at
   // most options.max_iterations further outer iterations. `progress` (optional) is where a
   // previous call stopped and is updated; iteration numbers continue from it.
-  static SolverSummary Minimize(const energy::Problem& problem, const Options& options,
+  static SolverSummary Minimize(const energy::Problem& problem,
+                                const SolverSettings& settings, const Options& options,
                                 energy::Variables* v,
                                 const IterationCallback& callback = nullptr,
                                 MinimizerProgress* progress = nullptr);

@@ -47,11 +47,13 @@ TerminationType FromCeres(ceres::TerminationType type) {
 class TraceCallback final : public ceres::IterationCallback {
  public:
   TraceCallback(const energy::Problem& problem, const energy::EnergyParameters& parameters,
-                const CeresJointSolver::Options& options, Clock::time_point start,
+                int num_threads, const CeresJointSolver::Options& options,
+                Clock::time_point start,
                 energy::Variables* v, SolverSummary* summary,
                 const solvers::IterationCallback& callback)
       : problem_(problem),
         parameters_(parameters),
+        threads_(num_threads),
         options_(options),
         start_(start),
         v_(v),
@@ -61,7 +63,7 @@ class TraceCallback final : public ceres::IterationCallback {
   // Sets L, M (and S when it is held at Eq. 8) to their closed forms, which the Ceres
   // objective implies, and returns Eq. (5) there.
   energy::EnergyBreakdown EliminatedEnergy() const {
-    const int threads = options_.num_threads;
+    const int threads = threads_;
     energy::FittingTerm(problem_, parameters_.mu_l, threads).UpdateLineProcesses(v_);
     const energy::SmoothnessTerm smoothness(problem_, parameters_.lambda, parameters_.mu_m,
                                             threads);
@@ -93,6 +95,7 @@ class TraceCallback final : public ceres::IterationCallback {
  private:
   const energy::Problem& problem_;
   const energy::EnergyParameters& parameters_;
+  const int threads_;
   const CeresJointSolver::Options& options_;
   Clock::time_point start_;
   energy::Variables* v_;
@@ -130,8 +133,6 @@ bool CeresJointSolver::Options::IsValid(std::string* error) const {
     out << "the ceres tolerances must be >= 0";
   } else if (!(max_seconds > 0.0)) {
     out << "ceres_max_seconds must be > 0, got " << max_seconds;
-  } else if (num_threads < 1) {
-    out << "threads must be >= 1, got " << num_threads;
   } else {
     return true;
   }
@@ -140,14 +141,15 @@ bool CeresJointSolver::Options::IsValid(std::string* error) const {
 }
 
 SolverSummary CeresJointSolver::Minimize(const energy::Problem& problem,
-                                         const energy::EnergyParameters& parameters,
+                                         const SolverSettings& settings,
                                          const Options& options, energy::Variables* v,
                                          const IterationCallback& callback) {
   SolverSummary summary;
   const Clock::time_point start = Clock::now();
-  if (!options.IsValid(&summary.message) || !parameters.IsValid(&summary.message)) {
+  if (!options.IsValid(&summary.message) || !settings.IsValid(&summary.message)) {
     return summary;
   }
+  const energy::EnergyParameters& parameters = settings.energy;
   const int n = problem.num_points();
   for (int i = 0; i < n; ++i) {
     if (!(v->h.row(i).norm() > 0.0) || !v->h.row(i).allFinite()) {
@@ -157,7 +159,7 @@ SolverSummary CeresJointSolver::Minimize(const energy::Problem& problem,
     }
   }
 
-  const int threads = options.num_threads;
+  const int threads = settings.num_threads;
   ceres::Problem::Options problem_options;
   problem_options.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem joint(problem_options);
@@ -191,7 +193,7 @@ SolverSummary CeresJointSolver::Minimize(const energy::Problem& problem,
   solver_options.num_threads = threads;
   solver_options.logging_type = ceres::SILENT;
   solver_options.update_state_every_iteration = true;
-  TraceCallback trace(problem, parameters, options, start, v, &summary, callback);
+  TraceCallback trace(problem, parameters, threads, options, start, v, &summary, callback);
   solver_options.callbacks.push_back(&trace);
 
   ceres::Solver::Summary ceres_summary;

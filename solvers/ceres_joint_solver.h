@@ -18,6 +18,7 @@
 #include "energy/energy_parameters.h"
 #include "energy/problem.h"
 #include "energy/variables.h"
+#include "solvers/solver_settings.h"
 #include "solvers/solver_summary.h"
 
 namespace lpd::solvers {
@@ -37,16 +38,15 @@ class CeresJointSolver {
     double parameter_tolerance = 1e-8;
     // Wall-time budget of the Ceres minimizer (NO_CONVERGENCE when it runs out).
     double max_seconds = 1e6;
-    int num_threads = 1;
 
     bool IsValid(std::string* error) const;
   };
 
-  // Minimizes from the state in `v`; every h_i must be non-zero (start from
-  // Initialization::kPlaneFit). One IterationRecord per Ceres iteration (from 1), with the
-  // energy per term; local/global seconds stay 0.
-  static SolverSummary Minimize(const energy::Problem& problem,
-                                const energy::EnergyParameters& parameters,
+  // Minimizes Eq. (5) with settings.energy as it is (settings.mu_l_noise_sigmas is the
+  // caller's to apply) on settings.num_threads threads, from the state in `v`; every h_i must
+  // be non-zero (start from Initialization::kPlaneFit). One IterationRecord per Ceres
+  // iteration (from 1), with the energy per term; local/global seconds stay 0.
+  static SolverSummary Minimize(const energy::Problem& problem, const SolverSettings& settings,
                                 const Options& options, energy::Variables* v,
                                 const IterationCallback& callback = nullptr);
 };

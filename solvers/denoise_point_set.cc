@@ -69,7 +69,7 @@ Initialization DenoiseOptions::EffectiveInitialization() const {
 bool DenoiseOptions::IsValid(std::string* error) const {
   if (choose_k && !neighborhood.IsValid(error)) return false;
   if (!choose_k && !problem.IsValid(error)) return false;
-  if (!weights.IsValid(error) || !minimizer.IsValid(error) ||
+  if (!settings.IsValid(error) || !weights.IsValid(error) || !minimizer.IsValid(error) ||
       !final_step.IsValid(error)) {
     return false;
   }
@@ -95,7 +95,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
   }
   DenoiseState state;
   state.order = energy::MortonOrder(points);
-  const int threads = options.minimizer.num_threads;
+  const int threads = options.settings.num_threads;
   const energy::PointList ordered_points = ToProblemOrder(points, state.order);
   energy::ProblemOptions problem_options = options.problem;
   if (options.choose_k) {
@@ -108,7 +108,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
   state.setup_seconds = SecondsSince(start);
   energy::PointList ordered_normals;
   if (normals) ordered_normals = ToProblemOrder(*normals, state.order);
-  state.variables = InitialState(state.problem, options.minimizer.energy,
+  state.variables = InitialState(state.problem, options.settings.energy,
                                  options.EffectiveInitialization(), threads,
                                  options.initialization_seed,
                                  normals ? &ordered_normals : nullptr);
@@ -119,25 +119,23 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
                                 const IterationCallback& callback) {
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
-  AlternatingMinimizer::Options minimizer = options.minimizer;
-  minimizer.energy =
-      energy::ScaleWeightsToData(state->problem, options.minimizer.energy, options.weights);
+  SolverSettings settings = options.settings;
+  settings.energy =
+      energy::ScaleWeightsToData(state->problem, options.settings.energy, options.weights);
   SolverSummary summary;
   if (options.solver == Solver::kCeres) {
-    CeresJointSolver::Options joint = options.joint;
-    joint.num_threads = minimizer.num_threads;
-    if (minimizer.mu_l_noise_sigmas > 0.0) {  // the joint solve starts from fitted planes
-      minimizer.energy.mu_l =
-          NoiseScaledMuL(state->problem, state->variables, minimizer.mu_l_noise_sigmas);
+    if (settings.mu_l_noise_sigmas > 0.0) {  // the joint solve starts from fitted planes
+      settings.energy.mu_l =
+          NoiseScaledMuL(state->problem, state->variables, settings.mu_l_noise_sigmas);
     }
-    summary = CeresJointSolver::Minimize(state->problem, minimizer.energy, joint,
+    summary = CeresJointSolver::Minimize(state->problem, settings, options.joint,
                                          &state->variables, callback);
-    summary.mu_l = minimizer.energy.mu_l;
-    summary.eta = minimizer.energy.eta;
-    summary.lambda = minimizer.energy.lambda;
+    summary.mu_l = settings.energy.mu_l;
+    summary.eta = settings.energy.eta;
+    summary.lambda = settings.energy.lambda;
   } else {
-    summary = AlternatingMinimizer::Minimize(state->problem, minimizer, &state->variables,
-                                             callback, &state->progress);
+    summary = AlternatingMinimizer::Minimize(state->problem, settings, options.minimizer,
+                                             &state->variables, callback, &state->progress);
   }
   if (!summary.IsSolutionUsable()) {
     throw std::runtime_error("minimization failed: " + summary.message);
@@ -155,7 +153,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   result.neighborhood = state.neighborhood;
   result.neighborhood.k = problem.k();  // also for a resumed state, which keeps no estimates
   if (options.final_step.projection == Projection::kSphere) {
-    ProjectOntoLocalSpheres(problem, state.variables, options.minimizer.num_threads,
+    ProjectOntoLocalSpheres(problem, state.variables, options.settings.num_threads,
                             &result.projected, &result.normals);
   } else {
     ProjectOntoTangentPlanes(problem, state.variables, &result.projected, &result.normals);

@@ -20,6 +20,7 @@
 #include "solvers/final_denoising.h"
 #include "solvers/initial_state.h"
 #include "solvers/neighborhood_size.h"
+#include "solvers/solver_settings.h"
 #include "solvers/solver_summary.h"
 
 namespace lpd::solvers {
@@ -36,10 +37,12 @@ struct DenoiseOptions {
   // When set, problem.k is replaced by the k chosen from the data (neighborhood_size.h).
   bool choose_k = true;
   NeighborhoodSizeOptions neighborhood;
-  // Energy weights, Alg. 1's schedule and the thread count of every stage (the joint solve's
-  // own num_threads is replaced by minimizer.num_threads).
+  // The energy's weights, the noise-scaled mu_l and the thread count of every stage, for
+  // whichever solver runs.
+  SolverSettings settings;
+  // Alg. 1's schedule, stopping rule, GNC and T solver.
   AlternatingMinimizer::Options minimizer;
-  // eta and lambda from the data (fit and smoothing balance); replaces minimizer.energy's
+  // eta and lambda from the data (fit and smoothing balance); replaces settings.energy's
   // eta and lambda for both solvers unless a balance is 0.
   energy::DataScaledWeights weights;
   Solver solver = Solver::kAlternating;

@@ -39,7 +39,7 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
   solvers::DenoiseState state = solvers::StartDenoising(points, options);
   const double balance = energy::MedianSmoothnessToStitchingRatio(
       state.problem,
-      energy::ScaleWeightsToData(state.problem, options.minimizer.energy, options.weights));
+      energy::ScaleWeightsToData(state.problem, options.settings.energy, options.weights));
   solvers::SolverSummary summary = solvers::MinimizeFromState(options, &state);
   const solvers::DenoiseResult result =
       solvers::FinishDenoising(state, options, std::move(summary));
@@ -47,7 +47,7 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
 
   std::printf("input %s: n = %zu, k = %d, threads = %d, %d outer x %d inner iterations\n",
               arguments[0].c_str(), points.size(), state.problem.k(),
-              options.minimizer.num_threads, options.minimizer.max_iterations,
+              options.settings.num_threads, options.minimizer.max_iterations,
               options.minimizer.inner_iterations);
   std::printf("read %.3f s, k-NN graph and weights %.3f s\n", read_seconds,
               result.setup_seconds);

@@ -118,7 +118,7 @@ solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
   SavedDenoiseRun saved = ReadDenoiseState(FLAGS_resume);
   *options = DenoiseOptionsFromFlags(&saved.parameters);
   if (!FlagGiven("threads")) {
-    options->minimizer.num_threads = saved.num_threads;
+    options->settings.num_threads = saved.num_threads;
   } else if (FLAGS_threads != saved.num_threads) {
     std::fprintf(stderr,
                  "note: the state was saved with %d threads; with %d the result can differ "
@@ -212,7 +212,7 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
   }
   std::printf("k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", result.neighborhood.k,
               chosen.c_str(), result.summary.eta, result.summary.lambda, result.summary.mu_l,
-              options.minimizer.energy.mu_m);
+              options.settings.energy.mu_m);
   if (options.final_step.snap_features) {
     std::printf("feature points snapped: %d onto edges, %d at corners, %d left on their plane\n",
                 result.snapping.snapped_to_edge, result.snapping.snapped_at_corner,

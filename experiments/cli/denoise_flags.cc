@@ -149,7 +149,7 @@ solvers::DenoiseOptions DenoiseOptionsFromFlags(
     }
     SetDenoiseParameter("mu_m_deg", std::to_string(FLAGS_mu_m_deg), &options);
   }
-  options.minimizer.num_threads = FLAGS_threads;
+  options.settings.num_threads = FLAGS_threads;
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   return options;

@@ -127,10 +127,10 @@ const std::vector<Parameter>& Parameters() {
       Number("k_radius_sigmas", kBoth,
              [](O& o) -> double& { return o.neighborhood.radius_in_sigmas; }),
       Integer("max_k", kBoth, [](O& o) -> int& { return o.neighborhood.max_k; }),
-      Number("lambda", kBoth, [](O& o) -> double& { return o.minimizer.energy.lambda; }),
-      Number("eta", kBoth, [](O& o) -> double& { return o.minimizer.energy.eta; }),
-      Number("mu_l", kBoth, [](O& o) -> double& { return o.minimizer.energy.mu_l; }),
-      Number("mu_m", kBoth, [](O& o) -> double& { return o.minimizer.energy.mu_m; }),
+      Number("lambda", kBoth, [](O& o) -> double& { return o.settings.energy.lambda; }),
+      Number("eta", kBoth, [](O& o) -> double& { return o.settings.energy.eta; }),
+      Number("mu_l", kBoth, [](O& o) -> double& { return o.settings.energy.mu_l; }),
+      Number("mu_m", kBoth, [](O& o) -> double& { return o.settings.energy.mu_m; }),
       Number("fit_balance", kBoth, [](O& o) -> double& { return o.weights.fit_balance; }),
       Number("smoothing_balance", kBoth,
              [](O& o) -> double& { return o.weights.smoothing_balance; }),
@@ -158,7 +158,7 @@ const std::vector<Parameter>& Parameters() {
       Flag("optimize_orientations", kAlternating,
            [](O& o) -> bool& { return o.minimizer.optimize_orientations; }),
       Number("mu_l_noise_sigmas", kBoth,
-             [](O& o) -> double& { return o.minimizer.mu_l_noise_sigmas; }),
+             [](O& o) -> double& { return o.settings.mu_l_noise_sigmas; }),
       EnumChoice<solvers::GncTarget>(
           "gnc", kAlternating, [](O& o) -> solvers::GncTarget& { return o.minimizer.gnc.target; },
           solvers::GncTargetName, solvers::ParseGncTarget, "none, mu_l, mu_m, both"),
@@ -270,7 +270,7 @@ void SetDenoiseParameter(const std::string& name, const std::string& text,
     if (!(angle > 0.0 && angle < 180.0)) {
       throw std::invalid_argument("parameter mu_m_deg must be in (0, 180), got " + text);
     }
-    options->minimizer.energy.mu_m = 1.0 - std::cos(angle * M_PI / 180.0);
+    options->settings.energy.mu_m = 1.0 - std::cos(angle * M_PI / 180.0);
     return;
   }
   const Parameter& parameter = Find(name);
@@ -294,7 +294,7 @@ void SetDenoiseParameter(const std::string& name, const std::string& text,
     // later rule parameter (they come after the weights) switches the rule back on.
     if (name == "eta") options->weights.fit_balance = 0.0;
     if (name == "lambda") options->weights.smoothing_balance = 0.0;
-    if (name == "mu_l") options->minimizer.mu_l_noise_sigmas = 0.0;
+    if (name == "mu_l") options->settings.mu_l_noise_sigmas = 0.0;
   } else {
     parameter.integer(*options) = ParseInteger(name, text);
   }
@@ -303,7 +303,7 @@ void SetDenoiseParameter(const std::string& name, const std::string& text,
 std::string GetDenoiseParameter(const std::string& name, const DenoiseOptions& options) {
   DenoiseOptions copy = options;  // the accessors hand out mutable references
   if (name == "mu_m_deg") {
-    return Text(std::acos(1.0 - copy.minimizer.energy.mu_m) * 180.0 / M_PI);
+    return Text(std::acos(1.0 - copy.settings.energy.mu_m) * 180.0 / M_PI);
   }
   const Parameter& parameter = Find(name);
   if (parameter.get_choice) return parameter.get_choice(copy);

@@ -96,7 +96,7 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   out.Array(kMagic, sizeof(kMagic));
   out.Value(kVersion);
   out.Value(kByteOrderMark);
-  out.Value(static_cast<int32_t>(options.minimizer.num_threads));
+  out.Value(static_cast<int32_t>(options.settings.num_threads));
   std::vector<std::string> names;
   for (const std::string& name : DenoiseParameterNames()) {
     if (DenoiseParameterApplies(name, options.solver)) names.push_back(name);

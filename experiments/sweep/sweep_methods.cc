@@ -57,7 +57,7 @@ solvers::DenoiseOptions DenoiseOptionsOf(const MethodConfig& method, solvers::So
 MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
                       const energy::PointList& input, int num_threads) {
   solvers::DenoiseOptions options = DenoiseOptionsOf(method, solver);
-  options.minimizer.num_threads = num_threads;
+  options.settings.num_threads = num_threads;
   options.minimizer.trace_blocks = false;
   const solvers::DenoiseResult result = solvers::DenoisePointSet(
       input, options, [](const solvers::IterationRecord&) { return !InterruptionRequested(); });

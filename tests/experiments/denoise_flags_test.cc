@@ -39,8 +39,8 @@ TEST(DenoiseFlags, PaperPresetTakesTheGivenFlagsOverItsOwnValues) {
   gflags::SetCommandLineOption("lambda", "2");
   const solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
   const solvers::DenoiseOptions paper = solvers::PresetOptions(solvers::Preset::kPaper);
-  EXPECT_EQ(options.minimizer.energy.lambda, 2.0);
-  EXPECT_EQ(options.minimizer.energy.eta, 5000.0);
+  EXPECT_EQ(options.settings.energy.lambda, 2.0);
+  EXPECT_EQ(options.settings.energy.eta, 5000.0);
   EXPECT_EQ(options.problem.k, 20);
   EXPECT_FALSE(options.choose_k);
   for (const std::string& name : DenoiseParameterNames()) {
@@ -55,7 +55,7 @@ TEST(DenoiseFlags, AWeightGivenOutrightReplacesItsDataRule) {
   gflags::SetCommandLineOption("mu_l", "1e-4");
   const solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
   EXPECT_EQ(options.weights.fit_balance, 0.0);
-  EXPECT_EQ(options.minimizer.mu_l_noise_sigmas, 0.0);
+  EXPECT_EQ(options.settings.mu_l_noise_sigmas, 0.0);
   EXPECT_GT(options.weights.smoothing_balance, 0.0);  // lambda was not given
 }
 

@@ -25,16 +25,16 @@ std::string TemporaryPath(const std::string& name) {
 
 solvers::DenoiseOptions RunOptions(int max_iterations) {
   solvers::DenoiseOptions options;
-  options.minimizer.num_threads = 2;
+  options.settings.num_threads = 2;
   options.minimizer.max_iterations = max_iterations;
   // Everything that carries state across iterations: the scale-aware mu_l, a continuation
   // still under way at the split, and the energy history of the stopping test.
-  options.minimizer.mu_l_noise_sigmas = 3.0;
+  options.settings.mu_l_noise_sigmas = 3.0;
   options.minimizer.gnc.target = solvers::GncTarget::kBoth;
   options.minimizer.gnc.factor = 3.0;
   options.minimizer.gnc.stage_iterations = 2;
   options.minimizer.energy_tolerance = 1e-9;
-  options.minimizer.energy.mu_m = 1.0 - std::cos(25.0 * M_PI / 180.0);  // not a short decimal
+  options.settings.energy.mu_m = 1.0 - std::cos(25.0 * M_PI / 180.0);  // not a short decimal
   return options;
 }
 
@@ -58,7 +58,7 @@ TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
   const solvers::DenoiseOptions first_options = RunOptions(4);
   solvers::DenoiseState first = solvers::StartDenoising(points, first_options);
   solvers::MinimizeFromState(first_options, &first);
-  ASSERT_FALSE(first.progress.gnc_mu_m.AtTarget(first_options.minimizer.energy.mu_m))
+  ASSERT_FALSE(first.progress.gnc_mu_m.AtTarget(first_options.settings.energy.mu_m))
       << "the split should fall inside the continuation";
   WriteDenoiseState(path, first, first_options, /*overwrite=*/false);
 
@@ -69,9 +69,9 @@ TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
   for (const auto& [name, value] : saved.parameters) {
     SetDenoiseParameter(name, value, &resumed_options);
   }
-  resumed_options.minimizer.num_threads = saved.num_threads;
+  resumed_options.settings.num_threads = saved.num_threads;
   resumed_options.minimizer.max_iterations = 5;
-  EXPECT_EQ(resumed_options.minimizer.energy.mu_m, full_options.minimizer.energy.mu_m);
+  EXPECT_EQ(resumed_options.settings.energy.mu_m, full_options.settings.energy.mu_m);
   solvers::DenoiseState& resumed = saved.state;
   // The rebuilt problem: same points, graph and weights without a k-NN search.
   EXPECT_EQ(resumed.order, full.order);

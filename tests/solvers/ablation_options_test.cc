@@ -17,7 +17,7 @@ namespace {
 // The paper's setting, which these ablations vary one option of.
 DenoiseOptions BaseOptions() {
   DenoiseOptions options = PresetOptions(Preset::kPaper);
-  options.minimizer.num_threads = 2;
+  options.settings.num_threads = 2;
   return options;
 }
 
@@ -125,7 +125,7 @@ TEST(AblationOptions, RobustResidualScaleEstimatesTheNoise) {
 TEST(AblationOptions, ScaleAwareMuLIsSetFromTheFirstLocalFit) {
   const energy::PointList points = testing::NoisyPlane(3000, 0.01, 6);
   DenoiseOptions options = BaseOptions();
-  options.minimizer.mu_l_noise_sigmas = 3.0;
+  options.settings.mu_l_noise_sigmas = 3.0;
   options.minimizer.max_iterations = 1;
   DenoiseState state = StartDenoising(points, options);
   const SolverSummary summary = MinimizeFromState(options, &state);
@@ -134,7 +134,7 @@ TEST(AblationOptions, ScaleAwareMuLIsSetFromTheFirstLocalFit) {
   options.initialization = Initialization::kPlaneFit;
   const double scale = RobustFittingResidualScale(
       first_fit.problem,
-      InitialState(first_fit.problem, options.minimizer.energy, Initialization::kPlaneFit, 2));
+      InitialState(first_fit.problem, options.settings.energy, Initialization::kPlaneFit, 2));
   EXPECT_DOUBLE_EQ(summary.mu_l, 9.0 * scale * scale);
   EXPECT_DOUBLE_EQ(state.progress.mu_l, summary.mu_l);
   EXPECT_DOUBLE_EQ(summary.iterations[0].mu_l, summary.mu_l);
@@ -150,7 +150,7 @@ TEST(AblationOptions, ContinuationFollowsItsGeometricSchedule) {
   options.minimizer.energy_tolerance = 0.0;
   DenoiseState state = StartDenoising(points, options);
   const SolverSummary summary = MinimizeFromState(options, &state);
-  const energy::EnergyParameters& target = options.minimizer.energy;
+  const energy::EnergyParameters& target = options.settings.energy;
   // The convex start 3 max r^2, from the residuals after the first H and T updates; a
   // fresh run stopped right after them measures those residuals.
   const double mu_m0 = summary.iterations[0].mu_m;

@@ -26,14 +26,19 @@ energy::Problem PlaneProblem(int n, double sigma, uint64_t seed, int k) {
   return energy::BuildProblem(testing::NoisyPlane(n, sigma, seed), problem_options);
 }
 
-AlternatingMinimizer::Options TightOptions(const energy::EnergyParameters& parameters) {
+SolverSettings Fixed(const energy::EnergyParameters& parameters) {
+  SolverSettings settings;
+  settings.energy = parameters;
+  settings.mu_l_noise_sigmas = 0.0;  // one energy throughout: mu_l stays the given one
+  settings.num_threads = 2;
+  return settings;
+}
+
+AlternatingMinimizer::Options TightOptions() {
   AlternatingMinimizer::Options options;
-  options.energy = parameters;
-  options.mu_l_noise_sigmas = 0.0;  // one energy throughout: mu_l stays the given one
   options.max_iterations = 6;
   options.energy_tolerance = 0.0;
   options.linear_solver.relative_tolerance = 1e-12;
-  options.num_threads = 2;
   return options;
 }
 
@@ -47,7 +52,7 @@ TEST(AlternatingMinimizer, EnergyNeverIncreasesFromTheInitialization) {
          {energy::EnergyParameters(), testing::BalancedParameters()}) {
       energy::Variables v = energy::InitialVariables(problem);
       const SolverSummary summary =
-          AlternatingMinimizer::Minimize(problem, TightOptions(parameters), &v);
+          AlternatingMinimizer::Minimize(problem, Fixed(parameters), TightOptions(), &v);
       ASSERT_TRUE(summary.IsSolutionUsable()) << summary.message;
       EXPECT_EQ(summary.steps.size(), 6u * (2 + 3 * 2));
       ExpectMonotoneTrace(summary);
@@ -59,9 +64,10 @@ TEST(AlternatingMinimizer, EnergyNeverIncreasesFromRandomStates) {
   const energy::Problem problem = PlaneProblem(300, 0.05, 9, 6);
   for (uint64_t seed : {4, 5}) {
     energy::Variables v = testing::RandomVariables(problem, seed);
-    AlternatingMinimizer::Options options = TightOptions(testing::BalancedParameters());
+    AlternatingMinimizer::Options options = TightOptions();
     options.inner_iterations = 3;
-    ExpectMonotoneTrace(AlternatingMinimizer::Minimize(problem, options, &v));
+    ExpectMonotoneTrace(
+        AlternatingMinimizer::Minimize(problem, Fixed(testing::BalancedParameters()), options, &v));
   }
 }
 
@@ -71,23 +77,23 @@ TEST(AlternatingMinimizer, StopsOnTheEnergyWindowAndOnTheCallback) {
   options.max_iterations = 50;
   options.energy_tolerance = 0.5;  // generous: converges after window + 1 iterations at most
   energy::Variables v = energy::InitialVariables(problem);
-  SolverSummary summary = AlternatingMinimizer::Minimize(problem, options, &v);
+  SolverSummary summary = AlternatingMinimizer::Minimize(problem, {}, options, &v);
   EXPECT_EQ(summary.termination, TerminationType::kConvergence);
   EXPECT_LT(summary.num_iterations, 50);
 
   v = energy::InitialVariables(problem);
   summary = AlternatingMinimizer::Minimize(
-      problem, options, &v, [](const IterationRecord& r) { return r.iteration < 2; });
+      problem, {}, options, &v, [](const IterationRecord& r) { return r.iteration < 2; });
   EXPECT_EQ(summary.termination, TerminationType::kUserAbort);
   EXPECT_EQ(summary.num_iterations, 2);
 }
 
 TEST(AlternatingMinimizer, InvalidOptionsFailWithoutWork) {
   const energy::Problem problem = PlaneProblem(50, 0.01, 2, 4);
-  AlternatingMinimizer::Options options;
-  options.energy.lambda = -1.0;
+  SolverSettings settings;
+  settings.energy.lambda = -1.0;
   energy::Variables v = energy::InitialVariables(problem);
-  const SolverSummary summary = AlternatingMinimizer::Minimize(problem, options, &v);
+  const SolverSummary summary = AlternatingMinimizer::Minimize(problem, settings, {}, &v);
   EXPECT_EQ(summary.termination, TerminationType::kFailure);
   EXPECT_NE(summary.message.find("lambda"), std::string::npos);
   EXPECT_EQ(summary.num_iterations, 0);

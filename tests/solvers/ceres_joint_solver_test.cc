@@ -52,7 +52,7 @@ TEST(CeresJointSolver, ObjectiveIsTheEnergyWithOptimalLineProcesses) {
   options.k = 6;
   const energy::Problem problem = energy::BuildProblem(testing::NoisySphere(200, 0.05, 3), options);
   // The paper's weights, with mu_l far below the residuals.
-  const energy::EnergyParameters paper = PresetOptions(Preset::kPaper).minimizer.energy;
+  const energy::EnergyParameters paper = PresetOptions(Preset::kPaper).settings.energy;
   for (const energy::EnergyParameters& w : {testing::BalancedParameters(), paper}) {
     for (uint64_t seed = 1; seed <= 5; ++seed) {
       energy::Variables v = testing::RandomVariables(problem, seed);
@@ -66,6 +66,15 @@ TEST(CeresJointSolver, ObjectiveIsTheEnergyWithOptimalLineProcesses) {
   }
 }
 
+// The energy `w` as it is, on two threads.
+SolverSettings Settings(const energy::EnergyParameters& w) {
+  SolverSettings settings;
+  settings.energy = w;
+  settings.mu_l_noise_sigmas = 0.0;
+  settings.num_threads = 2;
+  return settings;
+}
+
 TEST(CeresJointSolver, KeepsPlanesOnTheSphereAndLowersTheEnergy) {
   energy::ProblemOptions options;
   options.k = 8;
@@ -76,8 +85,7 @@ TEST(CeresJointSolver, KeepsPlanesOnTheSphereAndLowersTheEnergy) {
     CeresJointSolver::Options joint;
     joint.optimize_orientations = blocks;
     joint.max_iterations = 10;
-    joint.num_threads = 2;
-    const SolverSummary summary = CeresJointSolver::Minimize(problem, w, joint, &v);
+    const SolverSummary summary = CeresJointSolver::Minimize(problem, Settings(w), joint, &v);
     ASSERT_TRUE(summary.IsSolutionUsable()) << summary.message;
     EXPECT_LT(summary.final_energy.total(), summary.initial_energy.total());
     for (int i = 0; i < problem.num_points(); ++i) {
@@ -100,7 +108,7 @@ TEST(CeresJointSolver, RefusesPlanesOffTheSphere) {
   const energy::Problem problem = energy::BuildProblem(testing::NoisySphere(100, 0.02, 5), options);
   energy::Variables v = energy::InitialVariables(problem);  // h = 0
   const SolverSummary summary =
-      CeresJointSolver::Minimize(problem, energy::EnergyParameters(), {}, &v);
+      CeresJointSolver::Minimize(problem, {}, {}, &v);
   EXPECT_FALSE(summary.IsSolutionUsable());
   EXPECT_NE(summary.message.find("plane_fit"), std::string::npos) << summary.message;
 }
@@ -125,18 +133,18 @@ TEST(CeresJointSolver, NoisyCubeAgainstTheAlternatingDriver) {
   energy::ProblemOptions options;
   options.k = 10;
   const energy::Problem problem = energy::BuildProblem(input, options, 2);
-  const energy::EnergyParameters w = PresetOptions(Preset::kPaper).minimizer.energy;
+  const energy::EnergyParameters w = PresetOptions(Preset::kPaper).settings.energy;
   const energy::Variables start = InitialState(problem, w, Initialization::kPlaneFit, 2);
 
   energy::Variables alternating = start;
-  AlternatingMinimizer::Options schedule = PresetOptions(Preset::kPaper).minimizer;
-  schedule.num_threads = 2;
+  const DenoiseOptions paper = PresetOptions(Preset::kPaper);
+  SolverSettings settings = paper.settings;
+  settings.num_threads = 2;
   const SolverSummary alternating_summary =
-      AlternatingMinimizer::Minimize(problem, schedule, &alternating);
+      AlternatingMinimizer::Minimize(problem, settings, paper.minimizer, &alternating);
   energy::Variables joint = start;
-  CeresJointSolver::Options joint_options;
-  joint_options.num_threads = 2;
-  const SolverSummary joint_summary = CeresJointSolver::Minimize(problem, w, joint_options, &joint);
+  const SolverSummary joint_summary =
+      CeresJointSolver::Minimize(problem, settings, CeresJointSolver::Options(), &joint);
   ASSERT_TRUE(alternating_summary.IsSolutionUsable()) << alternating_summary.message;
   ASSERT_EQ(joint_summary.termination, TerminationType::kConvergence) << joint_summary.message;
 

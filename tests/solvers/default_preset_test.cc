@@ -43,7 +43,7 @@ double MeanDistance(const experiments::ProceduralShape& shape, const DenoiseResu
 
 DenoiseOptions Defaults() {
   DenoiseOptions options = PresetOptions(Preset::kDefault);
-  options.minimizer.num_threads = 2;
+  options.settings.num_threads = 2;
   return options;
 }
 

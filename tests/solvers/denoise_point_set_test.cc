@@ -24,7 +24,7 @@ DenoiseOptions FastOptions(int k) {
   options.choose_k = false;
   options.problem.k = k;
   options.minimizer.max_iterations = 3;
-  options.minimizer.num_threads = 2;
+  options.settings.num_threads = 2;
   return options;
 }
 
@@ -97,9 +97,9 @@ TEST(DenoisePointSet, IndicatorsFindInjectedOutliersAndBoxEdges) {
   // the points right at an edge here: docs/method.md.)
   DenoiseOptions options = PresetOptions(Preset::kPaper);
   options.minimizer.max_iterations = 3;
-  options.minimizer.num_threads = 2;
+  options.settings.num_threads = 2;
   const double diagonal = energy::BoundingBoxDiagonal(input);
-  options.minimizer.energy.mu_l = std::pow(4.0 * sigma / diagonal, 2);
+  options.settings.energy.mu_l = std::pow(4.0 * sigma / diagonal, 2);
   const DenoiseResult result = DenoisePointSet(input, options);
   ExpectFinite(result);
 

@@ -89,7 +89,7 @@ TEST(FeatureSnapping, MovesDenoisedFeaturePointsOfANoisyCubeCloserToItsEdgesAndS
   noise.seed = 4;
   const energy::PointList input = experiments::ApplyNoise(clean.points, clean.normals, noise).points;
   DenoiseOptions options = PresetOptions(Preset::kPaper);
-  options.minimizer.num_threads = 2;
+  options.settings.num_threads = 2;
   options.final_step.remove_outliers = false;
   const DenoiseResult plain = DenoisePointSet(input, options);
   options.final_step.snap_features = true;

@@ -312,9 +312,10 @@ TEST(MultilevelPreconditioner, NeedsFewerConjugateGradientStepsThanJacobi) {
   energy::Variables v = energy::InitialVariables(problem);
   AlternatingMinimizer::Options options;
   options.max_iterations = 1;
-  options.num_threads = 2;
-  AlternatingMinimizer::Minimize(problem, options, &v, nullptr);
-  const std::array<int, 2> iterations = IterationsToConverge(problem, options.energy, v);
+  SolverSettings settings;
+  settings.num_threads = 2;
+  AlternatingMinimizer::Minimize(problem, settings, options, &v, nullptr);
+  const std::array<int, 2> iterations = IterationsToConverge(problem, settings.energy, v);
   // Measured: 128 Jacobi and 13 multigrid iterations. This bound rejects plain Morton runs
   // (25 iterations) and point-Jacobi sweeps (36).
   EXPECT_LT(iterations[1], 0.15 * iterations[0])
