@@ -103,12 +103,11 @@ int ParseInteger(const std::string& name, const std::string& text) {
   return static_cast<int>(value);
 }
 
-const std::vector<Parameter>& Parameters() {
+// k, the energy's weights and their data rules, the initial state.
+std::vector<Parameter> ProblemAndEnergyParameters() {
   using O = DenoiseOptions;
   constexpr Scope kBoth = Scope::kBoth;
-  constexpr Scope kAlternating = Scope::kAlternating;
-  constexpr Scope kCeres = Scope::kCeres;
-  static const std::vector<Parameter> parameters = {
+  return {
       Choice(
           "k", kBoth,
           [](const O& o) {
@@ -150,6 +149,15 @@ const std::vector<Parameter>& Parameters() {
           }),
       Integer("initialization_seed", kBoth,
               [](O& o) -> int& { return o.initialization_seed; }),
+  };
+}
+
+// Alg. 1's schedule, stopping rule, GNC and T solver; mu_l_noise_sigmas.
+std::vector<Parameter> AlternatingParameters() {
+  using O = DenoiseOptions;
+  constexpr Scope kBoth = Scope::kBoth;
+  constexpr Scope kAlternating = Scope::kAlternating;
+  return {
       Integer("max_iters", kAlternating, [](O& o) -> int& { return o.minimizer.max_iterations; }),
       Integer("inner_iters", kAlternating,
               [](O& o) -> int& { return o.minimizer.inner_iterations; }),
@@ -175,6 +183,14 @@ const std::vector<Parameter>& Parameters() {
           "preconditioner", kAlternating,
           [](O& o) -> solvers::Preconditioner& { return o.minimizer.linear_solver.preconditioner; },
           solvers::PreconditionerName, solvers::ParsePreconditioner, "jacobi, multilevel"),
+  };
+}
+
+// The Ceres joint solve.
+std::vector<Parameter> JointSolveParameters() {
+  using O = DenoiseOptions;
+  constexpr Scope kCeres = Scope::kCeres;
+  return {
       Choice(
           "ceres_orientations", kCeres,
           [](const O& o) {
@@ -199,6 +215,14 @@ const std::vector<Parameter>& Parameters() {
       Number("ceres_parameter_tolerance", kCeres,
              [](O& o) -> double& { return o.joint.parameter_tolerance; }),
       Number("ceres_max_seconds", kCeres, [](O& o) -> double& { return o.joint.max_seconds; }),
+  };
+}
+
+// The final step of Sec. 3.4: projection, indicators, outlier passes, snapping.
+std::vector<Parameter> FinalStepParameters() {
+  using O = DenoiseOptions;
+  constexpr Scope kBoth = Scope::kBoth;
+  return {
       EnumChoice<solvers::Projection>(
           "projection", kBoth,
           [](O& o) -> solvers::Projection& { return o.final_step.projection; },
@@ -222,6 +246,17 @@ const std::vector<Parameter>& Parameters() {
       Integer("snap_min_cluster_planes", kBoth,
               [](O& o) -> int& { return o.final_step.snapping.min_cluster_planes; }),
   };
+}
+
+const std::vector<Parameter>& Parameters() {
+  static const std::vector<Parameter> parameters = [] {
+    std::vector<Parameter> all;
+    for (auto group : {ProblemAndEnergyParameters, AlternatingParameters,
+                       JointSolveParameters, FinalStepParameters}) {
+      for (Parameter& parameter : group()) all.push_back(std::move(parameter));
+    }
+    return all;
+  }();
   return parameters;
 }
 
