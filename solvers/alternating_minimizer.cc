@@ -49,6 +49,7 @@ class AlternatingRun {
         state_(*state),
         threads_(settings.num_threads),
         parameters_(settings.energy),
+        selectivities_(options.gnc, &state->gnc),
         smoother_(problem) {
     // The energy of Eq. (5) at the target selectivities; mu_l may still be replaced by the
     // scale-aware value at the first local step.
@@ -65,7 +66,7 @@ class AlternatingRun {
     const int last_iteration = state_.iterations + options_.max_iterations;
     for (int iteration = state_.iterations + 1; iteration <= last_iteration; ++iteration) {
       const IterationRecord record = RunIteration(iteration);
-      const bool at_targets = NextGncStage();
+      const bool at_targets = selectivities_.EndIteration(parameters_.mu_l, parameters_.mu_m);
       if (!std::isfinite(record.energy.total())) {
         Stop(TerminationType::kFailure, "the energy became non-finite at iteration " +
                                             std::to_string(iteration));
@@ -110,8 +111,8 @@ class AlternatingRun {
     return record;
   }
 
-  // H (Eq. 10), then L (Eq. 6) at the current mu_l. The first local step fixes the target
-  // mu_l (from the noise when mu_l_noise_sigmas > 0) and starts its continuation.
+  // H (Eq. 10), then L (Eq. 6) at the scheduled mu_l. The first local step fixes the target
+  // mu_l (from the noise when mu_l_noise_sigmas > 0).
   void LocalStep(IterationRecord* record) {
     record->local_seconds += RunBlock("H", record->iteration, 0, [&] {
       UpdateLocalPlanes(problem_, parameters_, threads_, v_);
@@ -123,12 +124,8 @@ class AlternatingRun {
       }
       state_.mu_l = parameters_.mu_l;
     }
-    const GncOptions& gnc = options_.gnc;
-    if (gnc.continues_mu_l() && !state_.gnc_mu_l.started()) {
-      state_.gnc_mu_l.Start(gnc, parameters_.mu_l,
-                            MaxSquaredFittingResidual(problem_, *v_, threads_));
-    }
-    record->mu_l = state_.gnc_mu_l.Value(parameters_.mu_l);
+    record->mu_l = selectivities_.FittingSelectivity(
+        parameters_.mu_l, [&] { return MaxSquaredFittingResidual(problem_, *v_, threads_); });
     const energy::FittingTerm fitting(problem_, record->mu_l, threads_);
     record->local_seconds += RunBlock("L", record->iteration, 0, [&] {
       fitting.UpdateLineProcesses(v_);
@@ -136,7 +133,7 @@ class AlternatingRun {
     }).seconds;
   }
 
-  // T (Eq. 9), M (Eq. 7) at the current mu_m, and S (Eq. 8).
+  // T (Eq. 9), M (Eq. 7) at the scheduled mu_m, and S (Eq. 8).
   void GlobalPass(int inner, IterationRecord* record) {
     const int iteration = record->iteration;
     const StepRecord t_step = RunBlock("T", iteration, inner, [&] {
@@ -144,12 +141,8 @@ class AlternatingRun {
     });
     record->global_seconds += t_step.seconds;
     record->cg_iterations += t_step.cg_iterations;
-    const GncOptions& gnc = options_.gnc;
-    if (gnc.continues_mu_m() && !state_.gnc_mu_m.started()) {
-      state_.gnc_mu_m.Start(gnc, parameters_.mu_m,
-                            MaxSquaredSmoothnessResidual(problem_, *v_, threads_));
-    }
-    record->mu_m = state_.gnc_mu_m.Value(parameters_.mu_m);
+    record->mu_m = selectivities_.SmoothnessSelectivity(
+        parameters_.mu_m, [&] { return MaxSquaredSmoothnessResidual(problem_, *v_, threads_); });
     const energy::SmoothnessTerm smoothness(problem_, parameters_.lambda, record->mu_m,
                                             threads_);
     record->global_seconds += RunBlock("M", iteration, inner, [&] {
@@ -183,23 +176,6 @@ class AlternatingRun {
     return step;
   }
 
-  bool AtTargets() const {
-    return state_.gnc_mu_l.AtTarget(parameters_.mu_l) &&
-           state_.gnc_mu_m.AtTarget(parameters_.mu_m);
-  }
-
-  // Moves graduated non-convexity to its next stage when the current one is done; true once
-  // both continued selectivities are at their targets (always without continuation).
-  bool NextGncStage() {
-    const bool at_targets = AtTargets();
-    if (!at_targets && ++state_.stage_iterations == options_.gnc.stage_iterations) {
-      state_.gnc_mu_l.Shrink(options_.gnc, parameters_.mu_l);
-      state_.gnc_mu_m.Shrink(options_.gnc, parameters_.mu_m);
-      state_.stage_iterations = 0;
-    }
-    return at_targets;
-  }
-
   // The stopping rule: |E_t - E_{t-w}| <= tolerance |E_{t-w}| over the iterations run at the
   // target selectivities.
   bool Converged(double total) {
@@ -225,7 +201,7 @@ class AlternatingRun {
   // still the output is (a slow drift of the plane field where the data leave a tilt
   // undetermined lowers the energy long after the points settle).
   void DescribeNoConvergence() {
-    if (!AtTargets()) {
+    if (!selectivities_.AtTargets(parameters_.mu_l, parameters_.mu_m)) {
       summary_.message = "reached max_iters before graduated non-convexity reached its targets";
       return;
     }
@@ -250,6 +226,7 @@ class AlternatingRun {
   MinimizerProgress& state_;
   const int threads_;
   energy::EnergyParameters parameters_;
+  SelectivitySchedule selectivities_;  // the targets, or graduated non-convexity's stages
   TangentPlaneSmoother smoother_;
   SolverSummary summary_;
   const Clock::time_point run_start_ = Clock::now();

@@ -36,8 +36,7 @@ struct MinimizerProgress {
   double mu_l = NAN;
   // Graduated non-convexity: the current stage's selectivities and the outer iterations
   // done at that stage.
-  ContinuedSelectivity gnc_mu_l, gnc_mu_m;
-  int stage_iterations = 0;
+  GncState gnc;
   // Total energies of the iterations run at the target selectivities (convergence test).
   std::vector<double> energy_history;
 };

@@ -49,4 +49,34 @@ void ContinuedSelectivity::Shrink(const GncOptions& options, double target) {
   if (started()) current = std::max(target, current / options.factor);
 }
 
+double SelectivitySchedule::FittingSelectivity(
+    double target, const std::function<double()>& max_squared_residual) {
+  if (options_.continues_mu_l() && !state_.mu_l.started()) {
+    state_.mu_l.Start(options_, target, max_squared_residual());
+  }
+  return state_.mu_l.Value(target);
+}
+
+double SelectivitySchedule::SmoothnessSelectivity(
+    double target, const std::function<double()>& max_squared_residual) {
+  if (options_.continues_mu_m() && !state_.mu_m.started()) {
+    state_.mu_m.Start(options_, target, max_squared_residual());
+  }
+  return state_.mu_m.Value(target);
+}
+
+bool SelectivitySchedule::AtTargets(double mu_l_target, double mu_m_target) const {
+  return state_.mu_l.AtTarget(mu_l_target) && state_.mu_m.AtTarget(mu_m_target);
+}
+
+bool SelectivitySchedule::EndIteration(double mu_l_target, double mu_m_target) {
+  if (AtTargets(mu_l_target, mu_m_target)) return true;
+  if (++state_.stage_iterations == options_.stage_iterations) {
+    state_.mu_l.Shrink(options_, mu_l_target);
+    state_.mu_m.Shrink(options_, mu_m_target);
+    state_.stage_iterations = 0;
+  }
+  return false;
+}
+
 }  // namespace lpd::solvers

@@ -9,6 +9,7 @@
 #define LPD_SOLVERS_GRADUATED_NONCONVEXITY_H_
 
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace lpd::solvers {
@@ -47,6 +48,36 @@ struct ContinuedSelectivity {
   // The mu to use now: `current` once started, else the target.
   double Value(double target) const { return started() ? current : target; }
   bool AtTarget(double target) const { return !started() || current <= target; }
+};
+
+// Where a continuation stands between calls of Alg. 1 (saved with its progress).
+struct GncState {
+  ContinuedSelectivity mu_l, mu_m;
+  int stage_iterations = 0;  // outer iterations done at the current stage
+};
+
+// The selectivities Alg. 1's line-process updates use: the targets or, while continuation
+// runs, the current stage's values. Alg. 1 asks for them and reports every finished outer
+// iteration; nothing else of the continuation reaches its loop.
+class SelectivitySchedule {
+ public:
+  SelectivitySchedule(const GncOptions& options, GncState* state)
+      : options_(options), state_(*state) {}
+
+  // mu_l for the L update (Eq. 6). On the first call with mu_l continued, the continuation
+  // starts from the residuals whose largest square `max_squared_residual` returns.
+  double FittingSelectivity(double target, const std::function<double()>& max_squared_residual);
+  // mu_m for the M update (Eq. 7), likewise.
+  double SmoothnessSelectivity(double target,
+                               const std::function<double()>& max_squared_residual);
+  bool AtTargets(double mu_l_target, double mu_m_target) const;
+  // After an outer iteration: true if it ran at the targets; otherwise counts it toward the
+  // current stage and moves to the next stage when that one is done.
+  bool EndIteration(double mu_l_target, double mu_m_target);
+
+ private:
+  const GncOptions& options_;
+  GncState& state_;
 };
 
 }  // namespace lpd::solvers

@@ -124,9 +124,9 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   out.Array(v.s.data(), v.s.size());
   out.Value(static_cast<int32_t>(progress.iterations));
   out.Value(progress.mu_l);
-  out.Value(progress.gnc_mu_l.current);
-  out.Value(progress.gnc_mu_m.current);
-  out.Value(static_cast<int32_t>(progress.stage_iterations));
+  out.Value(progress.gnc.mu_l.current);
+  out.Value(progress.gnc.mu_m.current);
+  out.Value(static_cast<int32_t>(progress.gnc.stage_iterations));
   out.Value(static_cast<uint32_t>(progress.energy_history.size()));
   out.Array(progress.energy_history.data(), progress.energy_history.size());
   out.Array(kEndMark, sizeof(kEndMark));
@@ -198,9 +198,9 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   solvers::MinimizerProgress& progress = state.progress;
   progress.iterations = in.Value<int32_t>();
   progress.mu_l = in.Value<double>();
-  progress.gnc_mu_l.current = in.Value<double>();
-  progress.gnc_mu_m.current = in.Value<double>();
-  progress.stage_iterations = in.Value<int32_t>();
+  progress.gnc.mu_l.current = in.Value<double>();
+  progress.gnc.mu_m.current = in.Value<double>();
+  progress.gnc.stage_iterations = in.Value<int32_t>();
   in.Vector(in.Value<uint32_t>(), &progress.energy_history);
   char end[sizeof(kEndMark)];
   in.Array(end, sizeof(end));

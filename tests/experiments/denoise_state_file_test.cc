@@ -58,7 +58,7 @@ TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
   const solvers::DenoiseOptions first_options = RunOptions(4);
   solvers::DenoiseState first = solvers::StartDenoising(points, first_options);
   solvers::MinimizeFromState(first_options, &first);
-  ASSERT_FALSE(first.progress.gnc_mu_m.AtTarget(first_options.settings.energy.mu_m))
+  ASSERT_FALSE(first.progress.gnc.mu_m.AtTarget(first_options.settings.energy.mu_m))
       << "the split should fall inside the continuation";
   WriteDenoiseState(path, first, first_options, /*overwrite=*/false);
 
