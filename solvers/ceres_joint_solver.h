@@ -1,5 +1,5 @@
-// lpd: the joint-solve baseline: Eq. (5) minimized over (H, T, S) at once by Ceres, to
-// validate the alternating driver of Alg. 1 on the same energy.
+// lpd: the joint solve (the validation solver): Eq. (5) minimized over (H, T, S) at once by
+// Ceres, to validate the alternating driver of Alg. 1 on the same energy.
 //
 // The line processes are eliminated by Eq. (3): each term adds its residuals with the
 // Geman-McClure loss (see energy/plane_residuals.h), so Ceres' objective 1/2 sum rho(|f|^2)

@@ -40,7 +40,7 @@ DEFINE_double(mu_m_deg, 0.0,
               "cannot be combined with --mu_m");
 // ---- solver ----
 DEFINE_string(solver, "alternating",
-              "alternating (Alg. 1, the paper's method) or ceres (the joint-solve baseline: "
+              "alternating (Alg. 1, the paper's method) or ceres (the joint solve, the validation solver: "
               "Eq. 5 minimized over H, T, S at once by Ceres)");
 DEFINE_string(initialization, "auto",
               "start of the minimization: zero (Alg. 1: H = T = 0), plane_fit (PCA planes, "

@@ -2,7 +2,7 @@
 //
 //   none   the noisy input unchanged (the "input" row of a table)
 //   lpd    the paper's method (DenoisePointSet, Alg. 1); parameters as in denoise_parameters.h
-//   ceres  the same energy minimized jointly by Ceres (the validation baseline), followed by
+//   ceres  the same energy minimized jointly by Ceres (the validation solver), followed by
 //          the same final step; the parameters that apply to the joint solve
 //   bilateral  CGAL bilateral smoothing with estimated normals (cgal_baselines.h):
 //              k=60, sharpness_angle=25 (degrees), iterations=3, normals=pca|jet

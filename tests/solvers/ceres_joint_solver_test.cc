@@ -1,4 +1,4 @@
-// The joint-solve baseline: its Ceres objective is Eq. (5) with optimal line processes, it
+// The joint solve: its Ceres objective is Eq. (5) with optimal line processes, it
 // keeps h_i on the sphere and lowers the energy, and on a noisy cube it is compared with the
 // alternating driver of Alg. 1 from the same start.
 #include "solvers/ceres_joint_solver.h"
