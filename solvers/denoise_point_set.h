@@ -1,8 +1,8 @@
 // lpd: the whole method in one call: points in, denoised points and indicators out.
 //
 // Builds the problem (normalization, N, M, alpha, beta), minimizes Eq. (5) with Alg. 1 (or
-// with the Ceres joint solve (the validation solver)), then runs the final denoising of Sec. 3.4. Inputs are
-// never modified. The three stages are also callable one by one, so that a run can be saved
+// with the Ceres joint solve, the validation solver), then runs the final denoising of
+// Sec. 3.4. Inputs are never modified. The three stages are also callable one by one, so that a run can be saved
 // between them and continued later (warm restart, Sec. 4.1).
 #ifndef LPD_SOLVERS_DENOISE_POINT_SET_H_
 #define LPD_SOLVERS_DENOISE_POINT_SET_H_
