@@ -1,7 +1,8 @@
 // lpd: what a minimization returns: termination, energies, and a per-step trace.
 //
 // Shared by the alternating driver (Alg. 1) and the joint solve (the validation solver).
-// Sentinel values (termination FAILURE, message "Solve was not called") mark a summary that was never filled.
+// Sentinel values (termination FAILURE, message "Solve was not called") mark a summary that
+// was never filled.
 #ifndef LPD_SOLVERS_SOLVER_SUMMARY_H_
 #define LPD_SOLVERS_SOLVER_SUMMARY_H_
 
