@@ -1,9 +1,9 @@
 #include "experiments/io/atomic_output_file.h"
 
-#include <cstdio>
-#include <filesystem>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 
 #include <fcntl.h>
@@ -12,9 +12,12 @@
 #include "experiments/io/interruption.h"
 
 namespace lpd::experiments {
+namespace {
 
-void RefuseExistingOutput(const std::string& path, bool overwrite) {
-  namespace fs = std::filesystem;
+namespace fs = std::filesystem;
+
+// Refuses to replace `path` when it exists and !overwrite, or exists and is not a regular file.
+void RefuseToReplace(const std::string& path, bool overwrite) {
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (fs::exists(status)) {
@@ -28,6 +31,13 @@ void RefuseExistingOutput(const std::string& path, bool overwrite) {
                                " already exists (pass --overwrite to replace it)");
     }
   }
+}
+
+}  // namespace
+
+void RefuseExistingOutput(const std::string& path, bool overwrite) {
+  RefuseToReplace(path, overwrite);
+  std::error_code error;
   fs::path directory = fs::path(path).parent_path();
   if (directory.empty()) directory = ".";
   if (!fs::is_directory(directory, error)) {
@@ -46,7 +56,7 @@ void RefuseExistingOutput(const std::string& path, bool overwrite) {
 }
 
 AtomicOutputFile::AtomicOutputFile(const std::string& path, bool overwrite) : path_(path) {
-  RefuseExistingOutput(path, overwrite);
+  RefuseToReplace(path, overwrite);  // creating the temporary file tests the directory
   temporary_path_ = path + ".tmp." + std::to_string(::getpid());
   slot_ = RegisterTemporaryFile(temporary_path_);
   stream_.open(temporary_path_, std::ios::binary | std::ios::trunc);

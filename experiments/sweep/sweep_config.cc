@@ -158,6 +158,10 @@ DatasetConfig LoadDataset(const std::string& path, const YAML::Node& node) {
 
 }  // namespace
 
+int NumNoiseSettings(const SweepConfig& config, const DatasetConfig& dataset) {
+  return dataset.file.empty() ? static_cast<int>(config.noise.size()) : 1;
+}
+
 std::string ExpandDataPath(const std::string& path) {
   const std::string variable = "${LPD_DATA}";
   const size_t at = path.find(variable);
@@ -333,7 +337,7 @@ void CheckCellCount(const std::string& path, const SweepConfig& config) {
   double cells = 0.0;
   for (const DatasetConfig& dataset : config.datasets) {
     cells += static_cast<double>(config.repetitions) * config.methods.size() *
-             (dataset.file.empty() ? config.noise.size() : 1);
+             NumNoiseSettings(config, dataset);
   }
   if (cells > kMaxSweepCells) {
     Fail(path, 1, "the sweep has " + std::to_string(static_cast<long long>(cells)) +

@@ -73,6 +73,10 @@ std::string Describe(const ParameterSet& parameters);
 // next to the source tree when it is unset.
 std::string ExpandDataPath(const std::string& path);
 
+// How many noise settings `dataset` runs with: the whole noise grid when it is generated,
+// one ("as given") when it is read from a file.
+int NumNoiseSettings(const SweepConfig& config, const DatasetConfig& dataset);
+
 }  // namespace lpd::experiments
 
 #endif  // LPD_EXPERIMENTS_SWEEP_SWEEP_CONFIG_H_

@@ -275,7 +275,7 @@ std::vector<SweepCell> ExpandCells(const SweepConfig& config) {
     for (size_t d = 0; d < config.datasets.size(); ++d) {
       const DatasetConfig& dataset = config.datasets[d];
       const bool generated = dataset.file.empty();
-      const int num_noise = generated ? static_cast<int>(config.noise.size()) : 1;
+      const int num_noise = NumNoiseSettings(config, dataset);
       for (int n = 0; n < num_noise; ++n) {
         for (size_t m = 0; m < config.methods.size(); ++m) {
           SweepCell cell;
