@@ -11,15 +11,20 @@
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
 #include "solvers/sphere_projection.h"
+#include "solvers/subsample_extension.h"
+#include "solvers/thinning.h"
 
 namespace lpd::solvers {
 namespace {
 
-// values[r] belongs to input point order[r]; returns them indexed by input point.
+// values[r] belongs to input point order[r], extended[e] to input point left_out[e]; returns
+// them indexed by input point.
 template <typename Values>
-Values ToInputOrder(const Values& values, const std::vector<int>& order) {
-  Values input_ordered(values.size());
+Values ToInputOrder(const Values& values, const std::vector<int>& order, const Values& extended,
+                    const std::vector<int>& left_out) {
+  Values input_ordered(values.size() + extended.size());
   for (size_t r = 0; r < order.size(); ++r) input_ordered[order[r]] = values[r];
+  for (size_t e = 0; e < left_out.size(); ++e) input_ordered[left_out[e]] = extended[e];
   return input_ordered;
 }
 
@@ -48,6 +53,28 @@ void CheckFitsInMemory(int n, int k) {
                   k, n, needed / 1e9, available / 1e9);
     throw std::invalid_argument(message);
   }
+}
+
+// Keeps the rows `solved` (increasing) of `ordered_points` as the problem's points and
+// order, and moves the others to state->left_out.
+void SplitOffUnsolved(const std::vector<int>& solved, const energy::PointList& ordered_points,
+                      DenoiseState* state, energy::PointList* solved_points) {
+  std::vector<int> solved_order;
+  solved_order.reserve(solved.size());
+  solved_points->clear();
+  solved_points->reserve(solved.size());
+  size_t next = 0;
+  for (size_t r = 0; r < ordered_points.size(); ++r) {
+    if (next < solved.size() && solved[next] == static_cast<int>(r)) {
+      solved_order.push_back(state->order[r]);
+      solved_points->push_back(ordered_points[r]);
+      ++next;
+    } else {
+      state->left_out.push_back(state->order[r]);
+      state->left_out_points.push_back(ordered_points[r]);
+    }
+  }
+  state->order = std::move(solved_order);
 }
 
 }  // namespace
@@ -98,12 +125,16 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
   const int threads = options.settings.num_threads;
   const energy::PointList ordered_points = ToProblemOrder(points, state.order);
   energy::ProblemOptions problem_options = options.problem;
+  energy::PointList solved_points = ordered_points;
   if (options.choose_k) {
-    state.neighborhood = ChooseNeighborhoodSize(ordered_points, options.neighborhood, threads);
+    Thinning thinning = ChooseThinning(ordered_points, options.neighborhood, threads);
+    state.neighborhood = thinning.size;
     problem_options.k = state.neighborhood.k;
+    if (!thinning.rows.empty()) SplitOffUnsolved(thinning.rows, ordered_points, &state,
+                                                 &solved_points);
   }
-  CheckFitsInMemory(static_cast<int>(points.size()), problem_options.k);
-  state.problem = energy::BuildProblem(ordered_points, problem_options, threads);
+  CheckFitsInMemory(static_cast<int>(solved_points.size()), problem_options.k);
+  state.problem = energy::BuildProblem(solved_points, problem_options, threads);
   state.neighborhood.k = state.problem.k();
   state.setup_seconds = SecondsSince(start);
   energy::PointList ordered_normals;
@@ -152,25 +183,36 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   result.setup_seconds = state.setup_seconds;
   result.neighborhood = state.neighborhood;
   result.neighborhood.k = problem.k();  // also for a resumed state, which keeps no estimates
-  if (options.final_step.projection == Projection::kSphere) {
-    ProjectOntoLocalSpheres(problem, state.variables, options.settings.num_threads,
-                            &result.projected, &result.normals);
-  } else {
-    ProjectOntoTangentPlanes(problem, state.variables, &result.projected, &result.normals);
-  }
+  result.solved_points = problem.num_points();
+  const std::vector<LocalSurface> surfaces =
+      options.final_step.projection == Projection::kSphere
+          ? FitLocalSpheres(problem, state.variables, options.settings.num_threads)
+          : TangentPlaneSurfaces(state.variables);
+  ProjectOntoOwnSurfaces(problem, surfaces, &result.projected, &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
                                          options.final_step);
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
                                         options.final_step.snapping, &result.projected);
   }
-  for (auto* values : {&result.projected, &result.normals}) *values = ToInputOrder(*values, order);
+  energy::PointList extended_points, extended_normals;
+  PointIndicators extended;
+  if (!state.left_out.empty()) {
+    ExtendToPoints(problem, state.variables, surfaces, result.indicators, result.summary.mu_l,
+                   options.final_step, state.left_out_points, options.settings.num_threads,
+                   &extended_points, &extended_normals, &extended);
+  }
+  const std::vector<int>& left_out = state.left_out;
+  result.projected = ToInputOrder(result.projected, order, extended_points, left_out);
+  result.normals = ToInputOrder(result.normals, order, extended_normals, left_out);
   PointIndicators& indicators = result.indicators;
-  indicators.outlier_score = ToInputOrder(indicators.outlier_score, order);
-  indicators.feature_score = ToInputOrder(indicators.feature_score, order);
-  indicators.is_outlier = ToInputOrder(indicators.is_outlier, order);
-  indicators.is_feature = ToInputOrder(indicators.is_feature, order);
-  const int n = problem.num_points();
+  indicators.outlier_score =
+      ToInputOrder(indicators.outlier_score, order, extended.outlier_score, left_out);
+  indicators.feature_score =
+      ToInputOrder(indicators.feature_score, order, extended.feature_score, left_out);
+  indicators.is_outlier = ToInputOrder(indicators.is_outlier, order, extended.is_outlier, left_out);
+  indicators.is_feature = ToInputOrder(indicators.is_feature, order, extended.is_feature, left_out);
+  const int n = static_cast<int>(result.projected.size());
   for (int i = 0; i < n; ++i) {
     result.num_outliers += result.indicators.is_outlier[i];
     result.num_features += result.indicators.is_feature[i];
@@ -233,6 +275,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     result.removal_note = next.removal_note;
     result.passes = pass;
     result.neighborhood = next.neighborhood;
+    result.solved_points = next.solved_points;
     removed_by_last = next.num_removed;
     last_rows = std::move(rows);
   }

@@ -71,6 +71,7 @@ struct DenoiseResult {
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
   NeighborhoodSize neighborhood;     // k (and its estimates when chosen) of the last pass
+  int solved_points = 0;             // points in the last pass's problem (thinning.h)
   std::string removal_note;          // why flagged outliers were kept, if they were
   SolverSummary summary;
   double setup_seconds = 0.0;        // normalization and k-NN graph
@@ -87,6 +88,10 @@ struct DenoiseState {
   // The noise and spacing estimates behind k when it was chosen from the data (else k only).
   NeighborhoodSize neighborhood;
   double setup_seconds = 0.0;  // normalization and k-NN graph
+  // When the problem holds a subsample (subsample_extension.h), the input points left out of
+  // it: their input indices and coordinates. FinishDenoising extends the result to them.
+  std::vector<int> left_out;
+  energy::PointList left_out_points;
 };
 
 // Stage 1: normalization, N and M, and the initial state. `normals` (in input order) are

@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "energy/geman_mcclure.h"
-#include "energy/plane_projection.h"
 #include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
@@ -44,6 +44,27 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
   return false;
 }
 
+std::vector<double> PlaneSupport(const energy::Variables& v) {
+  std::vector<double> support(v.l.rows());
+  for (size_t j = 0; j < support.size(); ++j) support[j] = v.l.row(j).mean();
+  return support;
+}
+
+double OutlierScore(const energy::Point3& p, const int* planes, int count,
+                    const energy::Variables& v, const std::vector<double>& support,
+                    double mu_l) {
+  // Evidence that p lies on the surface: the line process each plane h_j gives it (Eq. 6),
+  // weighted by that plane's support.
+  const energy::GemanMcClure penalty(mu_l);
+  double evidence = 0.0;
+  for (int a = 0; a < count; ++a) {
+    const int j = planes[a];
+    const double residual = v.h.row(j).head<3>().dot(p.transpose()) + v.h(j, 3);
+    evidence += support[j] * penalty.OptimalLineProcess(residual * residual);
+  }
+  return 1.0 - evidence / count;
+}
+
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
                                   double mu_l, const FinalDenoisingOptions& options) {
   const int n = problem.num_points();
@@ -54,23 +75,12 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
   indicators.feature_score.resize(n);
   indicators.is_outlier.resize(n);
   indicators.is_feature.resize(n);
-  const energy::GemanMcClure penalty(mu_l);
-  // How much of its own neighbourhood each plane h_j explains: the mean of l_ja over a.
-  std::vector<double> support(n);
-  for (int j = 0; j < n; ++j) support[j] = v.l.row(j).mean();
-  // Evidence that q_i lies on the surface: the line process each plane h_j, j in N(i) u {i},
-  // gives q_i (Eq. 6), weighted by that plane's support.
-  std::vector<double> evidence(n, 0.0);
+  const std::vector<double> support = PlaneSupport(v);
+  std::vector<int> fitting_points(k + 1);
   for (int i = 0; i < n; ++i) {
-    const energy::Point3& p = problem.points[i];
-    for (int a = 0; a <= k; ++a) {
-      const int j = graph.FittingPoint(i, a);
-      const double residual = v.h.row(j).head<3>().dot(p.transpose()) + v.h(j, 3);
-      evidence[i] += support[j] * penalty.OptimalLineProcess(residual * residual);
-    }
-  }
-  for (int i = 0; i < n; ++i) {
-    indicators.outlier_score[i] = 1.0 - evidence[i] / (k + 1);
+    for (int a = 0; a <= k; ++a) fitting_points[a] = graph.FittingPoint(i, a);
+    indicators.outlier_score[i] =
+        OutlierScore(problem.points[i], fitting_points.data(), k + 1, v, support, mu_l);
     indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
 
     const int begin = graph.incident_offsets[i];
@@ -83,24 +93,6 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
     indicators.is_feature[i] = indicators.feature_score[i] > options.feature_fraction;
   }
   return indicators;
-}
-
-void ProjectOntoTangentPlanes(const energy::Problem& problem, const energy::Variables& v,
-                              energy::PointList* points, energy::PointList* normals) {
-  const int n = problem.num_points();
-  points->resize(n);
-  normals->resize(n);
-  for (int i = 0; i < n; ++i) {
-    const energy::Point3& p = problem.points[i];
-    energy::Point3 projected;
-    if (energy::ProjectOntoPlane(p, v.t.row(i).transpose(), &projected)) {
-      (*points)[i] = problem.frame.ToInput(projected);
-      (*normals)[i] = v.t.row(i).head<3>().transpose().normalized();
-    } else {
-      (*points)[i] = problem.frame.ToInput(p);
-      (*normals)[i].setZero();
-    }
-  }
 }
 
 }  // namespace lpd::solvers

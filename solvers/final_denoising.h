@@ -67,14 +67,19 @@ struct PointIndicators {
   std::vector<uint8_t> is_feature;
 };
 
+// The support of every plane h_j: the mean of its line processes l_ja, the share of its
+// own neighbourhood it explains.
+std::vector<double> PlaneSupport(const energy::Variables& v);
+
+// The outlier score of the point p (normalized frame) asked of the planes h_j of `planes`
+// (above; `count` of them, with `support` from PlaneSupport and l at selectivity mu_l).
+double OutlierScore(const energy::Point3& p, const int* planes, int count,
+                    const energy::Variables& v, const std::vector<double>& support,
+                    double mu_l);
+
 // `mu_l`: the selectivity the fitting line processes were computed with.
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
                                   double mu_l, const FinalDenoisingOptions& options);
-
-// p_i projected onto the plane t_i, in the input frame, and the unit normal n_i / |n_i|.
-// Where |n_i| vanishes (no plane was found) p_i is kept and the normal is zero.
-void ProjectOntoTangentPlanes(const energy::Problem& problem, const energy::Variables& v,
-                              energy::PointList* points, energy::PointList* normals);
 
 }  // namespace lpd::solvers
 

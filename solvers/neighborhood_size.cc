@@ -1,15 +1,17 @@
 #include "solvers/neighborhood_size.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "energy/problem.h"
-#include "solvers/initial_state.h"
-#include "solvers/residual_statistics.h"
+#include <Eigen/Eigenvalues>
+
+#include "energy/normalization.h"
+#include "energy/point_kd_tree.h"
 
 namespace lpd::solvers {
 
@@ -19,6 +21,8 @@ bool NeighborhoodSizeOptions::IsValid(std::string* error) const {
     out << "probe_k must be >= 4, got " << probe_k;
   } else if (!(radius_in_sigmas > 0.0) || !std::isfinite(radius_in_sigmas)) {
     out << "k_radius_sigmas must be finite and > 0, got " << radius_in_sigmas;
+  } else if (!(max_problem_size >= 1e3) || !std::isfinite(max_problem_size)) {
+    out << "max_problem_size must be finite and >= 1000, got " << max_problem_size;
   } else if (min_k < 3) {
     out << "min_k must be >= 3, got " << min_k;
   } else if (max_k < min_k) {
@@ -30,6 +34,20 @@ bool NeighborhoodSizeOptions::IsValid(std::string* error) const {
   return false;
 }
 
+namespace {
+
+// At most this many probe neighbourhoods: their medians are then stable to about 0.5%.
+constexpr int kMaxProbeQueries = 1 << 17;
+
+// The median of `values` (reordered).
+double Median(std::vector<double>* values) {
+  const auto middle = values->begin() + values->size() / 2;
+  std::nth_element(values->begin(), middle, values->end());
+  return *middle;
+}
+
+}  // namespace
+
 NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                         const NeighborhoodSizeOptions& options,
                                         int num_threads) {
@@ -39,18 +57,53 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                 " points to choose k from the data, got " + std::to_string(n) +
                                 " (give a smaller --k)");
   }
-  energy::ProblemOptions probe_options;
-  probe_options.k = std::min(options.probe_k, n - 1);
-  const energy::Problem probe = energy::BuildProblem(points, probe_options, num_threads);
-  const energy::Variables planes =
-      InitialState(probe, energy::EnergyParameters(), Initialization::kPlaneFit, num_threads);
-  const double k = probe_options.k;
+  const energy::Frame frame = energy::ComputeNormalizingFrame(points);
+  energy::PointList normalized(n);
+  for (int i = 0; i < n; ++i) normalized[i] = frame.ToNormalized(points[i]);
+  energy::PointListAdaptor adaptor{normalized};
+  energy::L2PointKdTree tree(3, adaptor,
+                             nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
+  tree.buildIndex();
+  const int k = std::min(options.probe_k, n - 1);
+  const int queries = std::min(n, kMaxProbeQueries);
+  std::vector<double> residuals(static_cast<size_t>(queries) * (k + 1));
+  std::vector<double> alpha(queries);
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<int> nearest(k + 1);
+    std::vector<double> squared_distances(k + 1);
+#pragma omp for schedule(static)
+    for (int query = 0; query < queries; ++query) {
+      const int i = static_cast<int>(static_cast<int64_t>(query) * n / queries);
+      tree.knnSearch(normalized[i].data(), k + 1, nearest.data(), squared_distances.data());
+      // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];
+      mean /= k + 1;
+      Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+      double squared_sum = 0.0;
+      for (int a = 0; a <= k; ++a) {
+        const Eigen::Vector3d d = normalized[nearest[a]] - mean;
+        scatter += d * d.transpose();
+        squared_sum += (normalized[nearest[a]] - normalized[i]).squaredNorm();
+      }
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+      const Eigen::Vector3d normal = eigen.eigenvectors().col(0);
+      for (int a = 0; a <= k; ++a) {
+        residuals[static_cast<size_t>(query) * (k + 1) + a] =
+            std::abs(normal.dot(normalized[nearest[a]] - mean));
+      }
+      alpha[query] = squared_sum / k;
+    }
+  }
   NeighborhoodSize size;
-  size.noise_sigma = RobustFittingResidualScale(probe, planes) * std::sqrt((k + 1) / (k - 2));
-  size.spacing = std::sqrt(2.0 * M_PI * energy::MedianAlpha(probe) / k);
+  // 1.4826 median |residual|: sigma for Gaussian residuals (residual_statistics.h), with
+  // the three degrees of freedom the fitted plane absorbs given back.
+  size.noise_sigma = 1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0));
+  size.spacing = std::sqrt(2.0 * M_PI * Median(&alpha) / k);
   const double radius_in_spacings = options.radius_in_sigmas * size.noise_sigma / size.spacing;
   const double chosen = M_PI * radius_in_spacings * radius_in_spacings;
-  const int largest = std::min<int>(options.max_k, static_cast<int>(points.size()) - 1);
+  const int largest = std::min<int>(options.max_k, n - 1);
   size.k = static_cast<int>(std::lround(std::clamp(chosen, double(options.min_k),
                                                    double(std::max(options.min_k, largest)))));
   return size;

@@ -25,9 +25,12 @@ namespace lpd::solvers {
 
 struct NeighborhoodSizeOptions {
   int probe_k = 40;
-  double radius_in_sigmas = 4.2;
+  double radius_in_sigmas = 4.15;
   int min_k = 12;
   int max_k = 150;
+  // The largest problem solved, in neighbour entries n k; past it a subsample is solved
+  // (thinning.h). 1e7 is about 0.6 GB and 20 s on 2 cores.
+  double max_problem_size = 1e7;
 
   bool IsValid(std::string* error) const;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "energy/plane_projection.h"
@@ -14,13 +15,6 @@ namespace {
 // 1.94e-3 mean distance over the diagonal).
 constexpr double kRadiusFactor = 3.0;
 
-// p on the plane t (normalized frame); p itself when t has no normal.
-energy::Point3 OnPlane(const energy::Point3& p, const Eigen::Vector4d& t) {
-  energy::Point3 projected = p;
-  energy::ProjectOntoPlane(p, t, &projected);
-  return projected;
-}
-
 // Weighted sums over a neighbourhood's anchors x and unit normals n: sum w, w x, w n, w x.n
 // and w |x|^2.
 struct WeightedMoments {
@@ -29,13 +23,20 @@ struct WeightedMoments {
   double sxn, sxx;
 };
 
+LocalSurface TangentPlane(const Eigen::Vector4d& t, const Eigen::Vector3d& orientation) {
+  LocalSurface surface;
+  surface.kind = LocalSurface::Kind::kPlane;
+  surface.plane = t;
+  surface.orientation = orientation;
+  return surface;
+}
+
 // Fits the algebraic sphere u0 + u.x + u4 |x|^2 to the moments (APSS closed form: u4 from
-// the spread of x.n against |x|^2, then u, then u0) and moves p onto it. `ni` orients the
-// normal; a vanishing u4 (relative to the neighbourhood's reach^2) means a plane, and a fit
-// without a real sphere falls back to the plane t_i.
-void ProjectOntoFittedSphere(const WeightedMoments& m, const Eigen::Vector3d& p,
-                             const Eigen::Vector3d& ni, double reach, const Eigen::Vector4d& ti,
-                             Eigen::Vector3d* projected, Eigen::Vector3d* normal) {
+// the spread of x.n against |x|^2, then u, then u0). A vanishing u4 (relative to the
+// neighbourhood's reach^2) means a plane, and a fit without a real sphere falls back to the
+// plane t_i. `ni` orients the normal.
+LocalSurface FitSphere(const WeightedMoments& m, const Eigen::Vector3d& ni, double reach,
+                       const Eigen::Vector4d& ti) {
   const double sw = m.sw, sxn = m.sxn, sxx = m.sxx;
   const Eigen::Vector3d mean_x = m.sx / sw;
   const Eigen::Vector3d mean_n = m.snrm / sw;
@@ -44,85 +45,139 @@ void ProjectOntoFittedSphere(const WeightedMoments& m, const Eigen::Vector3d& p,
   const Eigen::Vector3d u = mean_n - 2.0 * u4 * mean_x;
   const double u0 = -u.dot(mean_x) - u4 * sxx / sw;
   if (std::abs(u4) * std::sqrt(reach) < 1e-9 * u.norm()) {  // a plane: u0 + u.x = 0
-    *normal = u.normalized();
-    *projected = p - *normal * ((u.dot(p) + u0) / u.norm());
-    return;
+    return TangentPlane(Eigen::Vector4d(u[0], u[1], u[2], u0), ni);
   }
-  const Eigen::Vector3d center = -u / (2.0 * u4);
-  const double radius2 = center.squaredNorm() - u0 / u4;
-  const Eigen::Vector3d offset = p - center;
-  if (radius2 <= 0.0 || offset.squaredNorm() == 0.0) {
-    *projected = OnPlane(p, ti);
-    *normal = ni;
-    return;
+  LocalSurface surface;
+  surface.center = -u / (2.0 * u4);
+  const double radius2 = surface.center.squaredNorm() - u0 / u4;
+  if (radius2 <= 0.0) return TangentPlane(ti, ni);
+  surface.kind = LocalSurface::Kind::kSphere;
+  surface.radius = std::sqrt(radius2);
+  surface.orientation = ni;
+  return surface;
+}
+
+// The weighted moments of i's anchor (weight 1) and of its partners' anchors and normals.
+WeightedMoments PartnerMoments(const energy::Problem& problem, const energy::Variables& v,
+                               int i, const std::vector<LocalSurface>& planes,
+                               const std::vector<Eigen::Vector3d>& anchors, double* reach) {
+  const auto& graph = problem.graph;
+  const Eigen::Vector3d& p = problem.points[i];
+  const Eigen::Vector3d& ni = planes[i].orientation;
+  const int begin = graph.incident_offsets[i];
+  const int end = graph.incident_offsets[i + 1];
+  *reach = 0.0;
+  for (int e = begin; e < end; ++e) {
+    const auto& pair = graph.pairs[graph.incident_pairs[e]];
+    const int j = pair[0] == i ? pair[1] : pair[0];
+    *reach = std::max(*reach, (problem.points[j] - p).squaredNorm());
   }
-  *normal = offset.normalized();
-  *projected = center + std::sqrt(radius2) * *normal;
-  if (normal->dot(ni) < 0.0) *normal = -*normal;
+  const double r2 = kRadiusFactor * kRadiusFactor * std::max(*reach, 1e-300);
+  WeightedMoments m{1.0, anchors[i], ni, anchors[i].dot(ni), anchors[i].squaredNorm()};
+  for (int e = begin; e < end; ++e) {
+    const int pair_index = graph.incident_pairs[e];
+    const auto& pair = graph.pairs[pair_index];
+    const int j = pair[0] == i ? pair[1] : pair[0];
+    if (planes[j].kind == LocalSurface::Kind::kNone) continue;
+    const double falloff = 1.0 - (problem.points[j] - p).squaredNorm() / r2;
+    if (falloff <= 0.0) continue;
+    const double w = v.m[pair_index] * std::pow(falloff, 4);
+    const Eigen::Vector3d nj = planes[j].orientation.dot(ni) < 0.0 ? -planes[j].orientation
+                                                                   : planes[j].orientation;
+    const Eigen::Vector3d& x = anchors[j];
+    m.sw += w;
+    m.sx += w * x;
+    m.snrm += w * nj;
+    m.sxn += w * x.dot(nj);
+    m.sxx += w * x.squaredNorm();
+  }
+  return m;
 }
 
 }  // namespace
 
-void ProjectOntoLocalSpheres(const energy::Problem& problem, const energy::Variables& v,
-                             int num_threads, energy::PointList* points,
-                             energy::PointList* normals) {
-  const int n = problem.num_points();
-  const auto& graph = problem.graph;
-  points->resize(n);
-  normals->resize(n);
-  std::vector<Eigen::Vector3d> unit_normals(n), anchors(n);
-  std::vector<uint8_t> has_normal(n);
+bool LocalSurface::Project(const Eigen::Vector3d& p, Eigen::Vector3d* projected,
+                           Eigen::Vector3d* normal) const {
+  if (kind == Kind::kNone) return false;
+  if (kind == Kind::kPlane) {
+    energy::ProjectOntoPlane(p, plane, projected);
+    *normal = plane.head<3>().normalized();
+    return true;
+  }
+  const Eigen::Vector3d offset = p - center;
+  if (offset.squaredNorm() == 0.0) {  // the centre: every direction is as near
+    *projected = p + radius * orientation;
+    *normal = orientation;
+    return true;
+  }
+  *normal = offset.normalized();
+  *projected = center + radius * *normal;
+  if (normal->dot(orientation) < 0.0) *normal = -*normal;
+  return true;
+}
+
+double LocalSurface::DistanceTo(const Eigen::Vector3d& p) const {
+  switch (kind) {
+    case Kind::kPlane:
+      return std::abs(plane.head<3>().dot(p) + plane[3]) / plane.head<3>().norm();
+    case Kind::kSphere:
+      return std::abs((p - center).norm() - radius);
+    case Kind::kNone:
+      break;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+std::vector<LocalSurface> TangentPlaneSurfaces(const energy::Variables& v) {
+  const int n = static_cast<int>(v.t.rows());
+  std::vector<LocalSurface> planes(n);
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector4d t = v.t.row(i).transpose();
     const double squared = t.head<3>().squaredNorm();
-    has_normal[i] = squared > energy::kMinPlaneNormalSquaredNorm;
-    unit_normals[i] = has_normal[i] ? Eigen::Vector3d(t.head<3>() / std::sqrt(squared))
-                                    : Eigen::Vector3d::Zero();
-    anchors[i] = OnPlane(problem.points[i], t);
+    if (squared > energy::kMinPlaneNormalSquaredNorm) {
+      planes[i] = TangentPlane(t, t.head<3>() / std::sqrt(squared));
+    }
   }
+  return planes;
+}
+
+std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
+                                          const energy::Variables& v, int num_threads) {
+  const int n = problem.num_points();
+  const std::vector<LocalSurface> planes = TangentPlaneSurfaces(v);
+  std::vector<Eigen::Vector3d> anchors(n);
+  for (int i = 0; i < n; ++i) {
+    anchors[i] = problem.points[i];
+    if (planes[i].kind != LocalSurface::Kind::kNone) {
+      energy::ProjectOntoPlane(problem.points[i], planes[i].plane, &anchors[i]);
+    }
+  }
+  std::vector<LocalSurface> spheres(n);
 #pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d& p = problem.points[i];
-    if (!has_normal[i]) {
-      (*points)[i] = problem.frame.ToInput(p);
-      (*normals)[i].setZero();
-      continue;
-    }
-    const Eigen::Vector3d& ni = unit_normals[i];
-    const int begin = graph.incident_offsets[i];
-    const int end = graph.incident_offsets[i + 1];
+    if (planes[i].kind == LocalSurface::Kind::kNone) continue;
     double reach = 0.0;
-    for (int e = begin; e < end; ++e) {
-      const auto& pair = graph.pairs[graph.incident_pairs[e]];
-      const int j = pair[0] == i ? pair[1] : pair[0];
-      reach = std::max(reach, (problem.points[j] - p).squaredNorm());
-    }
-    const double r2 = kRadiusFactor * kRadiusFactor * std::max(reach, 1e-300);
-    // Weighted sums over i (weight 1) and its partners: sum w, w x, w n, w x.n, w |x|^2.
-    double sw = 1.0, sxn = anchors[i].dot(ni), sxx = anchors[i].squaredNorm();
-    Eigen::Vector3d sx = anchors[i], snrm = ni;
-    for (int e = begin; e < end; ++e) {
-      const int pair_index = graph.incident_pairs[e];
-      const auto& pair = graph.pairs[pair_index];
-      const int j = pair[0] == i ? pair[1] : pair[0];
-      if (!has_normal[j]) continue;
-      const double falloff = 1.0 - (problem.points[j] - p).squaredNorm() / r2;
-      if (falloff <= 0.0) continue;
-      const double w = v.m[pair_index] * std::pow(falloff, 4);
-      const Eigen::Vector3d nj = unit_normals[j].dot(ni) < 0.0 ? -unit_normals[j]
-                                                                : unit_normals[j];
-      const Eigen::Vector3d& x = anchors[j];
-      sw += w;
-      sx += w * x;
-      snrm += w * nj;
-      sxn += w * x.dot(nj);
-      sxx += w * x.squaredNorm();
-    }
+    const WeightedMoments moments = PartnerMoments(problem, v, i, planes, anchors, &reach);
+    spheres[i] = FitSphere(moments, planes[i].orientation, reach, planes[i].plane);
+  }
+  return spheres;
+}
+
+void ProjectOntoOwnSurfaces(const energy::Problem& problem,
+                            const std::vector<LocalSurface>& surfaces, energy::PointList* points,
+                            energy::PointList* normals) {
+  const int n = problem.num_points();
+  points->resize(n);
+  normals->resize(n);
+  for (int i = 0; i < n; ++i) {
     Eigen::Vector3d projected, normal;
-    ProjectOntoFittedSphere(WeightedMoments{sw, sx, snrm, sxn, sxx}, p, ni, reach,
-                            v.t.row(i).transpose(), &projected, &normal);
-    (*points)[i] = problem.frame.ToInput(projected);
-    (*normals)[i] = normal;
+    if (surfaces[i].Project(problem.points[i], &projected, &normal)) {
+      (*points)[i] = problem.frame.ToInput(projected);
+      (*normals)[i] = normal;
+    } else {
+      (*points)[i] = problem.frame.ToInput(problem.points[i]);
+      (*normals)[i].setZero();
+    }
   }
 }
 

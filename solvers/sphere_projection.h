@@ -15,16 +15,45 @@
 #ifndef LPD_SOLVERS_SPHERE_PROJECTION_H_
 #define LPD_SOLVERS_SPHERE_PROJECTION_H_
 
+#include <vector>
+
+#include <Eigen/Core>
+
 #include "energy/problem.h"
 #include "energy/variables.h"
 
 namespace lpd::solvers {
 
-// `points` and `normals`: in input order of the problem (problem order), input frame. Points
-// whose plane t_i has no normal are left where they are with a zero normal.
-void ProjectOntoLocalSpheres(const energy::Problem& problem, const energy::Variables& v,
-                             int num_threads, energy::PointList* points,
-                             energy::PointList* normals);
+// The surface a point is projected onto, in the normalized frame: a sphere, a plane
+// u0 + u.x = 0, or none (the point stays and has no normal). `orientation` is the unit normal
+// of t_i, which the projected normal is made to agree with.
+struct LocalSurface {
+  enum class Kind { kNone, kPlane, kSphere };
+  Kind kind = Kind::kNone;
+  Eigen::Vector4d plane = Eigen::Vector4d::Zero();  // (u, u0); |u| need not be 1
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+  Eigen::Vector3d orientation = Eigen::Vector3d::Zero();
+
+  // The nearest point of the surface to p and the unit normal there; false for kNone.
+  bool Project(const Eigen::Vector3d& p, Eigen::Vector3d* projected,
+               Eigen::Vector3d* normal) const;
+  // |p - its projection|; infinity for kNone.
+  double DistanceTo(const Eigen::Vector3d& p) const;
+};
+
+// The tangent plane t_i of every point, as a LocalSurface (the projection of Sec. 3.4).
+std::vector<LocalSurface> TangentPlaneSurfaces(const energy::Variables& v);
+
+// The algebraic sphere of every point of the problem (problem order).
+std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
+                                          const energy::Variables& v, int num_threads);
+
+// Each problem point moved onto its own surface. `points` and `normals` in problem order and
+// the input frame; a point without a surface stays where it is with a zero normal.
+void ProjectOntoOwnSurfaces(const energy::Problem& problem,
+                            const std::vector<LocalSurface>& surfaces, energy::PointList* points,
+                            energy::PointList* normals);
 
 }  // namespace lpd::solvers
 

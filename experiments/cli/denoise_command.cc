@@ -210,6 +210,9 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
                   result.neighborhood.noise_sigma, result.neighborhood.spacing);
     chosen = text;
   }
+  if (static_cast<size_t>(result.solved_points) < num_input_points) {
+    chosen += " on a subsample of " + std::to_string(result.solved_points) + " points";
+  }
   std::printf("k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", result.neighborhood.k,
               chosen.c_str(), result.summary.eta, result.summary.lambda, result.summary.mu_l,
               options.settings.energy.mu_m);
@@ -280,7 +283,7 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
 
   const PointCloud cloud = MakeOutputCloud(result);
   if (!FLAGS_output.empty()) WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
-  PrintSummary(result, options, state.order.size(), cloud.points.size());
+  PrintSummary(result, options, result.projected.size(), cloud.points.size());
   if (input.is_built_in) PrintBuiltInDistance(input.built_in, cloud.points);
   if (!FLAGS_save_state.empty()) std::printf("saved state %s\n", FLAGS_save_state.c_str());
   if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());

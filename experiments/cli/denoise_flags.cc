@@ -16,10 +16,14 @@ DEFINE_string(k, "auto",
               "number of nearest neighbours |N(i)| (paper: 20; 50-150 for heavy noise), or "
               "auto: the points within k_radius_sigmas noise deviations, from the noise and "
               "point spacing estimated on the input, within [12, max_k]");
-DEFINE_double(k_radius_sigmas, 4.2,
+DEFINE_double(k_radius_sigmas, 4.15,
               "with --k=auto, k = pi (this x noise sigma / point spacing)^2: the neighbourhood "
               "radius in estimated noise deviations");
 DEFINE_int32(max_k, 150, "with --k=auto, the largest k chosen");
+DEFINE_double(max_problem_size, 1e7,
+              "with --k=auto, the largest problem solved, in neighbour entries n x k (1e7: "
+              "about 0.6 GB); past it a random subsample is denoised and every point is "
+              "projected onto the subsample's surfaces");
 DEFINE_double(lambda, 1.0, "weight of the piecewise-smoothness term (paper: 1-2)");
 DEFINE_double(eta, 5000.0, "weight of the stitching term |h_i - t_i|^2 (paper: 5000)");
 DEFINE_double(mu_l, 5e-9,

@@ -126,6 +126,8 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
       Number("k_radius_sigmas", kBoth,
              [](O& o) -> double& { return o.neighborhood.radius_in_sigmas; }),
       Integer("max_k", kBoth, [](O& o) -> int& { return o.neighborhood.max_k; }),
+      Number("max_problem_size", kBoth,
+             [](O& o) -> double& { return o.neighborhood.max_problem_size; }),
       Number("lambda", kBoth, [](O& o) -> double& { return o.settings.energy.lambda; }),
       Number("eta", kBoth, [](O& o) -> double& { return o.settings.energy.eta; }),
       Number("mu_l", kBoth, [](O& o) -> double& { return o.settings.energy.mu_l; }),

@@ -16,7 +16,7 @@ constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
 // 2: the saved parameters include the data-derived rules (k = auto, fit and smoothing
 // balance, projection, passes). A version-1 state lacks them and would resume under other
 // weights than it was written with, so it is refused.
-constexpr uint32_t kVersion = 2;
+constexpr uint32_t kVersion = 3;
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 
 class Writer {
@@ -84,6 +84,17 @@ class Reader {
   uint64_t remaining_ = 0;
 };
 
+// `count` points of three native doubles.
+energy::PointList ReadPoints(int32_t count, Reader* in) {
+  std::vector<double> coordinates;
+  in->Vector(3 * static_cast<uint64_t>(count), &coordinates);
+  energy::PointList points(count);
+  for (int i = 0; i < count; ++i) {
+    points[i] = energy::Point3(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]);
+  }
+  return points;
+}
+
 }  // namespace
 
 void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& state,
@@ -115,6 +126,9 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   out.Value(k);
   out.Array(state.order.data(), state.order.size());
   for (const energy::Point3& p : problem.points) out.Array(p.data(), 3);
+  out.Value(static_cast<int32_t>(state.left_out.size()));
+  out.Array(state.left_out.data(), state.left_out.size());
+  for (const energy::Point3& p : state.left_out_points) out.Array(p.data(), 3);
   out.Array(problem.graph.neighbors.data(), problem.graph.neighbors.size());
   out.Array(v.h.data(), v.h.size());
   out.Array(v.t.data(), v.t.size());
@@ -164,15 +178,21 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   const int32_t k = in.Value<int32_t>();
   if (n < 2 || k < 1 || k >= n) in.Fail("corrupt state file (point count or k)");
   in.Vector(n, &state.order);
-  std::vector<int> seen(n, 0);
-  for (int index : state.order) {
-    if (index < 0 || index >= n || seen[index]++) in.Fail("corrupt state file (input order)");
+  problem.points = ReadPoints(n, &in);
+  const int32_t num_left_out = in.Value<int32_t>();
+  if (num_left_out < 0) in.Fail("corrupt state file (left-out point count)");
+  in.Vector(num_left_out, &state.left_out);
+  state.left_out_points = ReadPoints(num_left_out, &in);
+  // Every input index once, over the solved and the left-out points.
+  const int64_t total = static_cast<int64_t>(n) + num_left_out;
+  std::vector<uint8_t> seen(total, 0);
+  for (const std::vector<int>* indices : {&state.order, &state.left_out}) {
+    for (int index : *indices) {
+      if (index < 0 || index >= total || seen[index]++) {
+        in.Fail("corrupt state file (input order)");
+      }
+    }
   }
-  std::vector<double> coordinates;
-  in.Vector(3 * static_cast<uint64_t>(n), &coordinates);
-  problem.points.resize(n);
-  for (int i = 0; i < n; ++i) problem.points[i] = energy::Point3(coordinates[3 * i], coordinates[3 * i + 1],
-                                                        coordinates[3 * i + 2]);
   problem.graph.k = k;
   in.Vector(static_cast<uint64_t>(n) * k, &problem.graph.neighbors);
   for (int j : problem.graph.neighbors) {

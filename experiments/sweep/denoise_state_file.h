@@ -4,10 +4,11 @@
 // The file holds everything the next iterations depend on, so that a resumed run with the
 // same options and thread count is the same bit for bit as an uninterrupted one: the
 // denoiser's parameters (as name = value text that reads back to the same doubles), the
-// normalization frame, the input order, the normalized points, k and N (M, alpha and beta are
-// rebuilt from them deterministically, without a k-NN search), H, T, L, M, S and the
-// minimizer's progress. Binary, native doubles, with a byte-order mark; a file from a machine
-// of the other byte order, a truncated file or a file of another format is rejected.
+// normalization frame, the input order, the normalized points, the points left out of a
+// subsample (thinning.h), k and N (M, alpha and beta are rebuilt from them
+// deterministically, without a k-NN search), H, T, L, M, S and the minimizer's progress.
+// Binary, native doubles, with a byte-order mark; a file from a machine of the other byte
+// order, a truncated file or a file of another format is rejected.
 #ifndef LPD_EXPERIMENTS_SWEEP_DENOISE_STATE_FILE_H_
 #define LPD_EXPERIMENTS_SWEEP_DENOISE_STATE_FILE_H_
 

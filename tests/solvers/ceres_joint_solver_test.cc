@@ -3,6 +3,7 @@
 // alternating driver of Alg. 1 from the same start.
 #include "solvers/ceres_joint_solver.h"
 #include "solvers/presets.h"
+#include "solvers/sphere_projection.h"
 
 #include <cmath>
 
@@ -172,9 +173,9 @@ TEST(CeresJointSolver, NoisyCubeAgainstTheAlternatingDriver) {
   // So only the alternating schedule denoises the cube.
   energy::PointList projected, normals;
   const double input_distance = MeanDistance(cube, input);
-  ProjectOntoTangentPlanes(problem, alternating, &projected, &normals);
+  ProjectOntoOwnSurfaces(problem, TangentPlaneSurfaces(alternating), &projected, &normals);
   EXPECT_LT(MeanDistance(cube, projected), 0.8 * input_distance);
-  ProjectOntoTangentPlanes(problem, joint, &projected, &normals);
+  ProjectOntoOwnSurfaces(problem, TangentPlaneSurfaces(joint), &projected, &normals);
   EXPECT_GT(MeanDistance(cube, projected), 10.0 * input_distance);
 }
 

@@ -59,7 +59,8 @@ double RmsDistanceToTheSphere(const energy::PointList& points) {
 TEST(SphereProjection, ExactTangentPlanesPutEveryPointBackOnTheSphere) {
   const DisplacedSphere sphere = MakeDisplacedSphere(2000, 0.01, 0.0);
   energy::PointList projected, normals;
-  ProjectOntoLocalSpheres(sphere.problem, sphere.variables, 2, &projected, &normals);
+  ProjectOntoOwnSurfaces(sphere.problem,
+                         FitLocalSpheres(sphere.problem, sphere.variables, 2), &projected, &normals);
   EXPECT_LT(LargestDistanceToTheSphere(projected), 1e-9);
   for (size_t i = 0; i < projected.size(); ++i) {
     ASSERT_NEAR(normals[i].dot(projected[i].normalized()), 1.0, 1e-9) << "normal " << i;
@@ -70,8 +71,10 @@ TEST(SphereProjection, AveragesNoisyPlaneOffsetsOverTheNeighbours) {
   constexpr double kOffsetNoise = 0.002;
   const DisplacedSphere sphere = MakeDisplacedSphere(4000, 0.01, kOffsetNoise);
   energy::PointList on_spheres, on_planes, normals;
-  ProjectOntoLocalSpheres(sphere.problem, sphere.variables, 2, &on_spheres, &normals);
-  ProjectOntoTangentPlanes(sphere.problem, sphere.variables, &on_planes, &normals);
+  ProjectOntoOwnSurfaces(sphere.problem,
+                         FitLocalSpheres(sphere.problem, sphere.variables, 2), &on_spheres, &normals);
+  ProjectOntoOwnSurfaces(sphere.problem, TangentPlaneSurfaces(sphere.variables), &on_planes,
+                         &normals);
   // Each plane's own offset error stays in its projection; the sphere fit averages about
   // 15 partners' (measured: RMS about a third of the plane projection's).
   EXPECT_NEAR(RmsDistanceToTheSphere(on_planes), kOffsetNoise, 0.1 * kOffsetNoise);
@@ -87,10 +90,12 @@ TEST(SphereProjection, CutPairsStayOutOfTheFit) {
   sphere.variables.t.row(j) << 1, 0, 0, 0.5;
   sphere.variables.m[pair] = 0.0;
   energy::PointList projected, normals;
-  ProjectOntoLocalSpheres(sphere.problem, sphere.variables, 1, &projected, &normals);
+  ProjectOntoOwnSurfaces(sphere.problem,
+                         FitLocalSpheres(sphere.problem, sphere.variables, 1), &projected, &normals);
   EXPECT_LT(std::abs(projected[0].norm() - kRadius), 1e-9);
   sphere.variables.m[pair] = 1.0;  // with the pair kept, the tilted plane pulls the fit off
-  ProjectOntoLocalSpheres(sphere.problem, sphere.variables, 1, &projected, &normals);
+  ProjectOntoOwnSurfaces(sphere.problem,
+                         FitLocalSpheres(sphere.problem, sphere.variables, 1), &projected, &normals);
   EXPECT_GT(std::abs(projected[0].norm() - kRadius), 1e-6);
 }
 

@@ -1,0 +1,69 @@
+#include "solvers/subsample_extension.h"
+
+#include <limits>
+#include <random>
+
+#include "energy/point_kd_tree.h"
+
+namespace lpd::solvers {
+
+std::vector<int> ChooseSubsample(int n, int count, uint64_t seed) {
+  // Selection sampling (Knuth, TAOCP 3.4.2, Algorithm S): one pass, already in order.
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<int> chosen;
+  chosen.reserve(count);
+  for (int i = 0; i < n && static_cast<int>(chosen.size()) < count; ++i) {
+    const int needed = count - static_cast<int>(chosen.size());
+    if ((n - i) * uniform(random) < needed) chosen.push_back(i);
+  }
+  return chosen;
+}
+
+void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
+                    const std::vector<LocalSurface>& surfaces, const PointIndicators& indicators,
+                    double mu_l, const FinalDenoisingOptions& options,
+                    const energy::PointList& queries, int num_threads,
+                    energy::PointList* projected, energy::PointList* normals,
+                    PointIndicators* query_indicators) {
+  const int count = static_cast<int>(queries.size());
+  const int neighbors = problem.k() + 1;
+  energy::PointListAdaptor adaptor{problem.points};
+  energy::L2PointKdTree tree(3, adaptor,
+                             nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
+  tree.buildIndex();
+  const std::vector<double> support = PlaneSupport(v);
+  projected->resize(count);
+  normals->resize(count);
+  PointIndicators& out = *query_indicators;
+  out.outlier_score.resize(count);
+  out.feature_score.resize(count);
+  out.is_outlier.resize(count);
+  out.is_feature.resize(count);
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<int> nearest(neighbors);
+    std::vector<double> squared_distances(neighbors);
+#pragma omp for schedule(static)
+    for (int q = 0; q < count; ++q) {
+      const energy::Point3 p = problem.frame.ToNormalized(queries[q]);
+      const int found = static_cast<int>(
+          tree.knnSearch(p.data(), neighbors, nearest.data(), squared_distances.data()));
+      const int host = nearest[0];
+      Eigen::Vector3d on_surface, normal;
+      if (surfaces[host].Project(p, &on_surface, &normal)) {
+        (*projected)[q] = problem.frame.ToInput(on_surface);
+        (*normals)[q] = normal;
+      } else {
+        (*projected)[q] = queries[q];
+        (*normals)[q].setZero();
+      }
+      out.outlier_score[q] = OutlierScore(p, nearest.data(), found, v, support, mu_l);
+      out.is_outlier[q] = out.outlier_score[q] >= options.outlier_fraction;
+      out.feature_score[q] = indicators.feature_score[nearest[0]];
+      out.is_feature[q] = indicators.is_feature[nearest[0]];
+    }
+  }
+}
+
+}  // namespace lpd::solvers

@@ -1,0 +1,32 @@
+// lpd: how many of the input points the problem holds.
+//
+// k grows with the density (neighborhood_size.h), and a run's time and memory grow like n k.
+// When n k exceeds options.max_problem_size, a random subsample is solved instead and the
+// result is extended to every point (subsample_extension.h). The subsample's k is chosen on
+// the subsample itself, and its size n_s is set so that n_s k(n_s) meets the budget. The same
+// surface with the same noise, sampled at any density past the budget, therefore gives the
+// same subsample size and the same k: beyond the budget, the result no longer depends on the
+// density. On the 1M-point cad_part at 0.5% noise, the whole cloud at k = 91 gives 1.30e-3 of
+// the diagonal in 120 s; a subsample of 250K at k = 73 gives 0.56e-3 (docs/method.md).
+#ifndef LPD_SOLVERS_THINNING_H_
+#define LPD_SOLVERS_THINNING_H_
+
+#include <vector>
+
+#include "energy/point3.h"
+#include "solvers/neighborhood_size.h"
+
+namespace lpd::solvers {
+
+struct Thinning {
+  std::vector<int> rows;  // the indices of the solved points, increasing; empty: all of them
+  NeighborhoodSize size;  // k and its estimates, on the solved points
+};
+
+// Throws std::invalid_argument as ChooseNeighborhoodSize.
+Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeOptions& options,
+                        int num_threads);
+
+}  // namespace lpd::solvers
+
+#endif  // LPD_SOLVERS_THINNING_H_
