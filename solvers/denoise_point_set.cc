@@ -198,7 +198,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   energy::PointList extended_points, extended_normals;
   PointIndicators extended;
   if (!state.left_out.empty()) {
-    ExtendToPoints(problem, state.variables, surfaces, result.indicators, result.summary.mu_l,
+    ExtendToPoints(problem, state.variables, result.indicators, result.summary.mu_l,
                    options.final_step, state.left_out_points, options.settings.num_threads,
                    &extended_points, &extended_normals, &extended);
   }

@@ -57,9 +57,11 @@ LocalSurface FitSphere(const WeightedMoments& m, const Eigen::Vector3d& ni, doub
   return surface;
 }
 
-// The weighted moments of i's anchor (weight 1) and of its partners' anchors and normals.
+// The weighted moments of i's anchor (weight 1) and of its partners' anchors and normals,
+// with the falloff measured from `center` (p_i for i's own sphere).
 WeightedMoments PartnerMoments(const energy::Problem& problem, const energy::Variables& v,
-                               int i, const std::vector<LocalSurface>& planes,
+                               int i, const Eigen::Vector3d& center,
+                               const std::vector<LocalSurface>& planes,
                                const std::vector<Eigen::Vector3d>& anchors, double* reach) {
   const auto& graph = problem.graph;
   const Eigen::Vector3d& p = problem.points[i];
@@ -79,7 +81,7 @@ WeightedMoments PartnerMoments(const energy::Problem& problem, const energy::Var
     const auto& pair = graph.pairs[pair_index];
     const int j = pair[0] == i ? pair[1] : pair[0];
     if (planes[j].kind == LocalSurface::Kind::kNone) continue;
-    const double falloff = 1.0 - (problem.points[j] - p).squaredNorm() / r2;
+    const double falloff = 1.0 - (problem.points[j] - center).squaredNorm() / r2;
     if (falloff <= 0.0) continue;
     const double w = v.m[pair_index] * std::pow(falloff, 4);
     const Eigen::Vector3d nj = planes[j].orientation.dot(ni) < 0.0 ? -planes[j].orientation
@@ -141,25 +143,29 @@ std::vector<LocalSurface> TangentPlaneSurfaces(const energy::Variables& v) {
   return planes;
 }
 
-std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
-                                          const energy::Variables& v, int num_threads) {
-  const int n = problem.num_points();
-  const std::vector<LocalSurface> planes = TangentPlaneSurfaces(v);
-  std::vector<Eigen::Vector3d> anchors(n);
-  for (int i = 0; i < n; ++i) {
-    anchors[i] = problem.points[i];
-    if (planes[i].kind != LocalSurface::Kind::kNone) {
-      energy::ProjectOntoPlane(problem.points[i], planes[i].plane, &anchors[i]);
+LocalSphereFitter::LocalSphereFitter(const energy::Problem& problem, const energy::Variables& v)
+    : problem_(problem), v_(v), planes_(TangentPlaneSurfaces(v)), anchors_(problem.num_points()) {
+  for (int i = 0; i < problem.num_points(); ++i) {
+    anchors_[i] = problem.points[i];
+    if (planes_[i].kind != LocalSurface::Kind::kNone) {
+      energy::ProjectOntoPlane(problem.points[i], planes_[i].plane, &anchors_[i]);
     }
   }
-  std::vector<LocalSurface> spheres(n);
+}
+
+LocalSurface LocalSphereFitter::FitAround(int i, const Eigen::Vector3d& center) const {
+  if (planes_[i].kind == LocalSurface::Kind::kNone) return LocalSurface();
+  double reach = 0.0;
+  const WeightedMoments moments = PartnerMoments(problem_, v_, i, center, planes_, anchors_, &reach);
+  return FitSphere(moments, planes_[i].orientation, reach, planes_[i].plane);
+}
+
+std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
+                                          const energy::Variables& v, int num_threads) {
+  const LocalSphereFitter fitter(problem, v);
+  std::vector<LocalSurface> spheres(problem.num_points());
 #pragma omp parallel for schedule(static) num_threads(num_threads)
-  for (int i = 0; i < n; ++i) {
-    if (planes[i].kind == LocalSurface::Kind::kNone) continue;
-    double reach = 0.0;
-    const WeightedMoments moments = PartnerMoments(problem, v, i, planes, anchors, &reach);
-    spheres[i] = FitSphere(moments, planes[i].orientation, reach, planes[i].plane);
-  }
+  for (int i = 0; i < problem.num_points(); ++i) spheres[i] = fitter.FitAround(i, problem.points[i]);
   return spheres;
 }
 

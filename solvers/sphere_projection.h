@@ -45,6 +45,22 @@ struct LocalSurface {
 // The tangent plane t_i of every point, as a LocalSurface (the projection of Sec. 3.4).
 std::vector<LocalSurface> TangentPlaneSurfaces(const energy::Variables& v);
 
+// Fits the algebraic sphere of point i's neighbourhood (its partners in M, weighted by m_ij),
+// with the falloff measured from a given centre: p_i for i's own sphere, or a point near p_i
+// that is not in the problem (subsample_extension.h).
+class LocalSphereFitter {
+ public:
+  // `problem` and `v` must outlive the fitter.
+  LocalSphereFitter(const energy::Problem& problem, const energy::Variables& v);
+  LocalSurface FitAround(int i, const Eigen::Vector3d& center) const;
+
+ private:
+  const energy::Problem& problem_;
+  const energy::Variables& v_;
+  std::vector<LocalSurface> planes_;        // t_j as surfaces
+  std::vector<Eigen::Vector3d> anchors_;    // p_j projected onto t_j
+};
+
 // The algebraic sphere of every point of the problem (problem order).
 std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
                                           const energy::Variables& v, int num_threads);

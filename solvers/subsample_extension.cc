@@ -1,6 +1,5 @@
 #include "solvers/subsample_extension.h"
 
-#include <limits>
 #include <random>
 
 #include "energy/point_kd_tree.h"
@@ -21,8 +20,8 @@ std::vector<int> ChooseSubsample(int n, int count, uint64_t seed) {
 }
 
 void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
-                    const std::vector<LocalSurface>& surfaces, const PointIndicators& indicators,
-                    double mu_l, const FinalDenoisingOptions& options,
+                    const PointIndicators& indicators, double mu_l,
+                    const FinalDenoisingOptions& options,
                     const energy::PointList& queries, int num_threads,
                     energy::PointList* projected, energy::PointList* normals,
                     PointIndicators* query_indicators) {
@@ -33,6 +32,9 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
                              nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
   tree.buildIndex();
   const std::vector<double> support = PlaneSupport(v);
+  const bool spheres = options.projection == Projection::kSphere;
+  const LocalSphereFitter fitter(problem, v);
+  const std::vector<LocalSurface> planes = TangentPlaneSurfaces(v);
   projected->resize(count);
   normals->resize(count);
   PointIndicators& out = *query_indicators;
@@ -51,7 +53,8 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
           tree.knnSearch(p.data(), neighbors, nearest.data(), squared_distances.data()));
       const int host = nearest[0];
       Eigen::Vector3d on_surface, normal;
-      if (surfaces[host].Project(p, &on_surface, &normal)) {
+      const LocalSurface surface = spheres ? fitter.FitAround(host, p) : planes[host];
+      if (surface.Project(p, &on_surface, &normal)) {
         (*projected)[q] = problem.frame.ToInput(on_surface);
         (*normals)[q] = normal;
       } else {

@@ -3,6 +3,8 @@
 // cloud at another scale gives the same result.
 #include "solvers/presets.h"
 
+#include <iterator>
+
 #include <gtest/gtest.h>
 
 #include "experiments/shapes/noise.h"
@@ -17,13 +19,15 @@ struct NoisyShape {
   energy::PointList points;
 };
 
-NoisyShape NoisyCadPart(int n, double sigma, double outlier_ratio = 0.0) {
+NoisyShape NoisyCadPart(int n, double sigma, double outlier_ratio = 0.0,
+                        uint64_t sample_seed = 2) {
   NoisyShape noisy{experiments::MakeShape({"cad_part", {}}), {}};
   experiments::NoiseOptions noise;
   noise.sigma = sigma;
   noise.outlier_ratio = outlier_ratio;
-  noise.seed = 3;
-  noisy.points = experiments::ApplyNoise(noisy.shape.Sample(n, 2).points, {}, noise).points;
+  noise.seed = sample_seed + 1;
+  noisy.points =
+      experiments::ApplyNoise(noisy.shape.Sample(n, sample_seed).points, {}, noise).points;
   return noisy;
 }
 
@@ -101,6 +105,33 @@ TEST(DefaultPreset, ADenserSamplingGetsMoreNeighboursAndNoWorseResult) {
   const DenoiseResult sparse_result = DenoisePointSet(sparse.points, options);
   const DenoiseResult dense_result = DenoisePointSet(dense.points, options);
   EXPECT_LE(MeanDistance(dense.shape, dense_result), MeanDistance(sparse.shape, sparse_result));
+}
+
+// Past the problem-size budget (thinning.h) the result hardly depends on the density: the
+// solved subsample is the same size. A draw of 20,000 points differs from another draw by up
+// to 3% (the subsample holds 12,000), so each side averages three draws. What remains is
+// that points left out of the subsample come out about 2.5% farther from the surface than
+// solved ones, and 85% of the dense cloud is left out against 42% of the sparse one
+// (measured: 3.667e-3 against 3.591e-3, 2.1%).
+TEST(DefaultPreset, PastTheBudgetA4xDenserCloudAtAnotherScaleGivesTheSameResult) {
+  constexpr double kScale = 1000.0;
+  constexpr uint64_t kDraws[] = {2, 4, 6};
+  DenoiseOptions options = Defaults();
+  options.neighborhood.max_problem_size = 5e5;
+  double sparse = 0.0, dense = 0.0;
+  for (uint64_t seed : kDraws) {
+    const NoisyShape sparse_cloud = NoisyCadPart(20000, 0.01, 0.0, seed);
+    NoisyShape dense_cloud = NoisyCadPart(80000, 0.01, 0.0, seed);
+    for (energy::Point3& p : dense_cloud.points) p *= kScale;
+    const DenoiseResult sparse_result = DenoisePointSet(sparse_cloud.points, options);
+    const DenoiseResult dense_result = DenoisePointSet(dense_cloud.points, options);
+    EXPECT_LT(sparse_result.solved_points, 13000);
+    EXPECT_NEAR(dense_result.solved_points, sparse_result.solved_points,
+                0.05 * sparse_result.solved_points);
+    sparse += MeanDistance(sparse_cloud.shape, sparse_result) / std::size(kDraws);
+    dense += MeanDistance(dense_cloud.shape, dense_result, kScale) / std::size(kDraws);
+  }
+  EXPECT_NEAR(dense, sparse, 0.025 * sparse);
 }
 
 TEST(DefaultPreset, ASecondPassWithoutTheOutliersGivesTheOutlierFreeResult) {

@@ -1,0 +1,129 @@
+// The subsample and its extension to every point: the subsample is uniform and reproducible;
+// a solved point gets exactly its own result back; points left out of an exact sphere land on
+// it; the thinning meets its budget and, past it, gives a denser sampling of the same surface
+// the same subsample size and k.
+#include "solvers/subsample_extension.h"
+
+#include <cmath>
+#include <random>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "experiments/shapes/noise.h"
+#include "experiments/shapes/shape_catalog.h"
+#include "solvers/thinning.h"
+#include "tests/solvers/displaced_sphere.h"
+
+namespace lpd::solvers {
+namespace {
+
+TEST(ChooseSubsample, GivesExactlyCountIncreasingIndicesReproducibly) {
+  const std::vector<int> chosen = ChooseSubsample(1000, 137, 4);
+  ASSERT_EQ(chosen.size(), 137u);
+  for (size_t a = 1; a < chosen.size(); ++a) ASSERT_LT(chosen[a - 1], chosen[a]);
+  EXPECT_GE(chosen.front(), 0);
+  EXPECT_LT(chosen.back(), 1000);
+  EXPECT_EQ(ChooseSubsample(1000, 137, 4), chosen);
+  EXPECT_NE(ChooseSubsample(1000, 137, 5), chosen);
+  EXPECT_EQ(ChooseSubsample(50, 50, 1).size(), 50u);
+  EXPECT_TRUE(ChooseSubsample(50, 0, 1).empty());
+}
+
+TEST(ChooseSubsample, ChoosesEveryIndexEquallyOften) {
+  // Over 4000 seeds each of 20 indices is chosen with probability 1/4: 1000 times, binomial
+  // deviation 27.
+  std::vector<int> times(20, 0);
+  for (uint64_t seed = 0; seed < 4000; ++seed) {
+    for (int index : ChooseSubsample(20, 5, seed)) ++times[index];
+  }
+  for (int index = 0; index < 20; ++index) EXPECT_NEAR(times[index], 1000, 140) << index;
+}
+
+TEST(ExtendToPoints, ASolvedPointGetsItsOwnProjectionAndOutlierScore) {
+  DisplacedSphere sphere = MakeDisplacedSphere(1500, 0.01, 0.002);
+  // Planes h_i off the points and uneven line processes, so that the score is not trivial.
+  std::mt19937_64 random(2);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  sphere.variables.h = sphere.variables.t;
+  for (int i = 0; i < sphere.variables.l.rows(); ++i) {
+    for (int a = 0; a < sphere.variables.l.cols(); ++a) sphere.variables.l(i, a) = uniform(random);
+  }
+  const energy::Problem& problem = sphere.problem;
+  FinalDenoisingOptions options;
+  constexpr double kMuL = 1e-4;
+  const std::vector<LocalSurface> surfaces = FitLocalSpheres(problem, sphere.variables, 2);
+  const PointIndicators own = ComputeIndicators(problem, sphere.variables, kMuL, options);
+  energy::PointList own_points, own_normals, points, normals;
+  ProjectOntoOwnSurfaces(problem, surfaces, &own_points, &own_normals);
+  PointIndicators extended;
+  ExtendToPoints(problem, sphere.variables, own, kMuL, options, problem.points, 2,
+                 &points, &normals, &extended);
+  for (int i = 0; i < problem.num_points(); ++i) {
+    ASSERT_LT((points[i] - own_points[i]).norm(), 1e-15) << i;
+    ASSERT_LT((normals[i] - own_normals[i]).norm(), 1e-15) << i;
+    ASSERT_NEAR(extended.outlier_score[i], own.outlier_score[i], 1e-12) << i;
+    ASSERT_EQ(extended.is_feature[i], own.is_feature[i]) << i;
+  }
+}
+
+TEST(ExtendToPoints, PointsLeftOutOfAnExactSphereLandOnIt) {
+  const DisplacedSphere sphere = MakeDisplacedSphere(2000, 0.01, 0.0);
+  PointIndicators own;
+  own.feature_score.assign(sphere.problem.num_points(), 0.0);
+  own.is_feature.assign(sphere.problem.num_points(), 0);
+  std::mt19937_64 random(9);
+  std::normal_distribution<double> gaussian;
+  energy::PointList left_out;
+  for (int q = 0; q < 500; ++q) {
+    const Eigen::Vector3d direction =
+        Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random)).normalized();
+    left_out.push_back((kRadius + 0.01 * gaussian(random)) * direction);
+  }
+  energy::PointList points, normals;
+  PointIndicators extended;
+  ExtendToPoints(sphere.problem, sphere.variables, own, 1e-4, FinalDenoisingOptions(),
+                 left_out, 1, &points, &normals, &extended);
+  for (size_t q = 0; q < left_out.size(); ++q) {
+    ASSERT_NEAR(points[q].norm(), kRadius, 1e-9) << q;
+    ASSERT_NEAR(normals[q].dot(left_out[q].normalized()), 1.0, 1e-9) << q;
+  }
+}
+
+energy::PointList NoisyCadPart(int n, uint64_t seed, double scale) {
+  const experiments::ProceduralShape shape = experiments::MakeShape({"cad_part", {}});
+  experiments::NoiseOptions noise;
+  noise.sigma = 0.01;
+  noise.seed = seed + 1;
+  energy::PointList points = experiments::ApplyNoise(shape.Sample(n, seed).points, {}, noise).points;
+  for (energy::Point3& p : points) p *= scale;
+  return points;
+}
+
+TEST(ChooseThinning, SolvesEveryPointWithinTheBudgetAndASubsampleThatMeetsItPast) {
+  const energy::PointList points = NoisyCadPart(20000, 1, 1.0);
+  NeighborhoodSizeOptions options;
+  const Thinning whole = ChooseThinning(points, options, 2);
+  EXPECT_TRUE(whole.rows.empty());
+  EXPECT_EQ(whole.size.k, ChooseNeighborhoodSize(points, options, 2).k);
+  options.max_problem_size = 2e5;
+  const Thinning thinned = ChooseThinning(points, options, 2);
+  const double size = static_cast<double>(thinned.rows.size()) * thinned.size.k;
+  EXPECT_LE(size, options.max_problem_size);
+  EXPECT_GE(size, 0.9 * options.max_problem_size);
+}
+
+TEST(ChooseThinning, PastTheBudgetADenserSamplingGivesTheSameSubsample) {
+  NeighborhoodSizeOptions options;
+  options.max_problem_size = 5e5;
+  const Thinning sparse = ChooseThinning(NoisyCadPart(20000, 1, 1.0), options, 2);
+  const Thinning dense = ChooseThinning(NoisyCadPart(80000, 2, 1000.0), options, 2);
+  // Measured: 11,907 points at k = 42 and 12,076 at k = 41.
+  EXPECT_NEAR(static_cast<double>(dense.rows.size()), sparse.rows.size(),
+              0.05 * sparse.rows.size());
+  EXPECT_NEAR(dense.size.k, sparse.size.k, 2);
+  EXPECT_NEAR(dense.size.noise_sigma, sparse.size.noise_sigma, 0.05 * sparse.size.noise_sigma);
+}
+
+}  // namespace
+}  // namespace lpd::solvers
