@@ -5,15 +5,18 @@
 //   k = pi (radius_in_sigmas sigma / spacing)^2,
 // clamped to [min_k, max_k]. The same cloud sampled 4x denser gets 4x the k and the same
 // neighbourhoods. c = 4.2 was read off the best k of the four inputs with a clean mesh
-// (FANDISK and JOINT at two noise levels: best k 16-24, 54, 36-54, >= 80; docs/method.md).
-// sigma and the spacing come from a probe: the k-NN graph and PCA planes at probe_k
-// neighbours. sigma is the normalized median absolute fitting residual
-// (residual_statistics.h) corrected for the three degrees of freedom a fitted plane absorbs,
-// sqrt((probe_k + 1) / (probe_k - 2)); the spacing is sqrt(2 pi median alpha_i / probe_k)
-// (alpha_i, the mean squared distance to the probe_k nearest neighbours, is probe_k spacing^2
-// / (2 pi) for a uniform disk). alpha_i also carries the noise, 2 sigma^2 per pair, so at
-// noise near the spacing this reads high (10% at sigma = 0.85 spacing); 4.2 was calibrated
-// with this reading.
+// (FANDISK and JOINT at two noise levels: best k 16-24, 54, 36-54, >= 80; docs/method.md)
+// with the 4-vector residuals of the first local fit; this probe's metric residuals read
+// 1.2% higher, and c = 4.15 gives the same k on three of the four (89 for 88 on the fourth).
+// sigma and the spacing come from a probe: a k-d tree over the points and 3D PCA planes
+// through probe_k + 1 nearest points, around at most 131,072 evenly strided points. sigma is
+// 1.4826 times the median distance of the points to their planes, corrected for the three
+// degrees of freedom a fitted plane absorbs, sqrt((probe_k + 1) / (probe_k - 2)); the
+// spacing is sqrt(2 pi median alpha_i / probe_k) (alpha_i, the mean squared distance to the
+// probe_k nearest neighbours, is probe_k spacing^2 / (2 pi) for a uniform disk). alpha_i
+// also carries the noise, 2 sigma^2 per pair, so at noise near the spacing this reads high
+// (10% at sigma = 0.85 spacing); c was calibrated with this reading. With noise wider than
+// a few spacings the probe reads low (thinning.h).
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 #define LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 

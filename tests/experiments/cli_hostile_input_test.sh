@@ -168,6 +168,7 @@ refuse max_iters_2e9 1 denoise "$dir/plain.xyz" -o out.ply --max_iters=200000000
 refuse lambda_1e400 1 denoise "$dir/plain.xyz" -o out.ply --lambda=1e400
 refuse mu_l_nan 1 denoise "$dir/plain.xyz" -o out.ply --mu_l=nan
 refuse max_k_negative 1 denoise "$dir/plain.xyz" -o out.ply --max_k=-4
+refuse max_problem_size_zero 1 denoise "$dir/plain.xyz" -o out.ply --max_problem_size=0
 {
   echo "name: huge"
   echo "datasets:"
