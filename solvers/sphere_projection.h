@@ -53,6 +53,7 @@ class LocalSphereFitter {
   // `problem` and `v` must outlive the fitter.
   LocalSphereFitter(const energy::Problem& problem, const energy::Variables& v);
   LocalSurface FitAround(int i, const Eigen::Vector3d& center) const;
+  const LocalSurface& TangentPlane(int i) const { return planes_[i]; }  // t_i
 
  private:
   const energy::Problem& problem_;

@@ -34,7 +34,6 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
   const std::vector<double> support = PlaneSupport(v);
   const bool spheres = options.projection == Projection::kSphere;
   const LocalSphereFitter fitter(problem, v);
-  const std::vector<LocalSurface> planes = TangentPlaneSurfaces(v);
   projected->resize(count);
   normals->resize(count);
   PointIndicators& out = *query_indicators;
@@ -53,7 +52,8 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
           tree.knnSearch(p.data(), neighbors, nearest.data(), squared_distances.data()));
       const int host = nearest[0];
       Eigen::Vector3d on_surface, normal;
-      const LocalSurface surface = spheres ? fitter.FitAround(host, p) : planes[host];
+      const LocalSurface surface =
+          spheres ? fitter.FitAround(host, p) : fitter.TangentPlane(host);
       if (surface.Project(p, &on_surface, &normal)) {
         (*projected)[q] = problem.frame.ToInput(on_surface);
         (*normals)[q] = normal;
