@@ -188,7 +188,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       options.final_step.projection == Projection::kSphere
           ? FitLocalSpheres(problem, state.variables, options.settings.num_threads)
           : TangentPlaneSurfaces(state.variables);
-  ProjectOntoOwnSurfaces(problem, surfaces, &result.projected, &result.normals);
+  ProjectOntoBlendedSurfaces(problem, surfaces, options.final_step.blended_surfaces,
+                             options.settings.num_threads, &result.projected, &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
                                          options.final_step);
   if (options.final_step.snap_features) {
@@ -198,7 +199,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   energy::PointList extended_points, extended_normals;
   PointIndicators extended;
   if (!state.left_out.empty()) {
-    ExtendToPoints(problem, state.variables, result.indicators, result.summary.mu_l,
+    ExtendToPoints(problem, state.variables, surfaces, result.indicators, result.summary.mu_l,
                    options.final_step, state.left_out_points, options.settings.num_threads,
                    &extended_points, &extended_normals, &extended);
   }

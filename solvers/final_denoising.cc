@@ -27,6 +27,8 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
   std::ostringstream out;
   if (!InUnitInterval(outlier_fraction)) {
     out << "outlier_fraction must be in (0, 1], got " << outlier_fraction;
+  } else if (blended_surfaces < 1) {
+    out << "blended_surfaces must be at least 1, got " << blended_surfaces;
   } else if (!InUnitInterval(feature_line_threshold)) {
     out << "feature_threshold must be in (0, 1], got " << feature_line_threshold;
   } else if (!(feature_fraction >= 0.0 && feature_fraction < 1.0)) {

@@ -28,6 +28,7 @@ DenoiseOptions PresetOptions(Preset preset) {
   options.minimizer.inner_iterations = 2;
   options.minimizer.energy_tolerance = 0.01;
   options.final_step.projection = Projection::kPlane;
+  options.final_step.blended_surfaces = 1;
   options.final_step.outlier_fraction = 0.9;
   options.final_step.feature_fraction = 0.7;
   options.final_step.outlier_passes = 1;

@@ -57,11 +57,9 @@ LocalSurface FitSphere(const WeightedMoments& m, const Eigen::Vector3d& ni, doub
   return surface;
 }
 
-// The weighted moments of i's anchor (weight 1) and of its partners' anchors and normals,
-// with the falloff measured from `center` (p_i for i's own sphere).
+// The weighted moments of i's anchor (weight 1) and of its partners' anchors and normals.
 WeightedMoments PartnerMoments(const energy::Problem& problem, const energy::Variables& v,
-                               int i, const Eigen::Vector3d& center,
-                               const std::vector<LocalSurface>& planes,
+                               int i, const std::vector<LocalSurface>& planes,
                                const std::vector<Eigen::Vector3d>& anchors, double* reach) {
   const auto& graph = problem.graph;
   const Eigen::Vector3d& p = problem.points[i];
@@ -81,7 +79,7 @@ WeightedMoments PartnerMoments(const energy::Problem& problem, const energy::Var
     const auto& pair = graph.pairs[pair_index];
     const int j = pair[0] == i ? pair[1] : pair[0];
     if (planes[j].kind == LocalSurface::Kind::kNone) continue;
-    const double falloff = 1.0 - (problem.points[j] - center).squaredNorm() / r2;
+    const double falloff = 1.0 - (problem.points[j] - p).squaredNorm() / r2;
     if (falloff <= 0.0) continue;
     const double w = v.m[pair_index] * std::pow(falloff, 4);
     const Eigen::Vector3d nj = planes[j].orientation.dot(ni) < 0.0 ? -planes[j].orientation
@@ -143,46 +141,71 @@ std::vector<LocalSurface> TangentPlaneSurfaces(const energy::Variables& v) {
   return planes;
 }
 
-LocalSphereFitter::LocalSphereFitter(const energy::Problem& problem, const energy::Variables& v)
-    : problem_(problem), v_(v), planes_(TangentPlaneSurfaces(v)), anchors_(problem.num_points()) {
-  for (int i = 0; i < problem.num_points(); ++i) {
-    anchors_[i] = problem.points[i];
-    if (planes_[i].kind != LocalSurface::Kind::kNone) {
-      energy::ProjectOntoPlane(problem.points[i], planes_[i].plane, &anchors_[i]);
-    }
-  }
-}
-
-LocalSurface LocalSphereFitter::FitAround(int i, const Eigen::Vector3d& center) const {
-  if (planes_[i].kind == LocalSurface::Kind::kNone) return LocalSurface();
-  double reach = 0.0;
-  const WeightedMoments moments = PartnerMoments(problem_, v_, i, center, planes_, anchors_, &reach);
-  return FitSphere(moments, planes_[i].orientation, reach, planes_[i].plane);
-}
-
 std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
                                           const energy::Variables& v, int num_threads) {
-  const LocalSphereFitter fitter(problem, v);
+  const std::vector<LocalSurface> planes = TangentPlaneSurfaces(v);
+  std::vector<Eigen::Vector3d> anchors(problem.points.begin(), problem.points.end());
+  for (int i = 0; i < problem.num_points(); ++i) {
+    if (planes[i].kind != LocalSurface::Kind::kNone) {
+      energy::ProjectOntoPlane(problem.points[i], planes[i].plane, &anchors[i]);
+    }
+  }
   std::vector<LocalSurface> spheres(problem.num_points());
 #pragma omp parallel for schedule(static) num_threads(num_threads)
-  for (int i = 0; i < problem.num_points(); ++i) spheres[i] = fitter.FitAround(i, problem.points[i]);
+  for (int i = 0; i < problem.num_points(); ++i) {
+    if (planes[i].kind == LocalSurface::Kind::kNone) continue;
+    double reach = 0.0;
+    const WeightedMoments moments = PartnerMoments(problem, v, i, planes, anchors, &reach);
+    spheres[i] = FitSphere(moments, planes[i].orientation, reach, planes[i].plane);
+  }
   return spheres;
 }
 
-void ProjectOntoOwnSurfaces(const energy::Problem& problem,
-                            const std::vector<LocalSurface>& surfaces, energy::PointList* points,
-                            energy::PointList* normals) {
+bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
+                      int count, const Eigen::Vector3d& p, Eigen::Vector3d* projected,
+                      Eigen::Vector3d* normal) {
+  Eigen::Vector3d position_sum = Eigen::Vector3d::Zero(), normal_sum = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d* orientation = nullptr;
+  int used = 0;
+  for (int a = 0; a < count; ++a) {
+    const LocalSurface& surface = surfaces[candidates[a]];
+    Eigen::Vector3d on_surface, surface_normal;
+    if (!surface.Project(p, &on_surface, &surface_normal)) continue;
+    if (orientation == nullptr) orientation = &surface.orientation;
+    position_sum += on_surface;
+    normal_sum += surface_normal.dot(*orientation) < 0.0 ? -surface_normal : surface_normal;
+    ++used;
+  }
+  if (used == 0) return false;
+  *projected = position_sum / used;
+  *normal = normal_sum.normalized();
+  return true;
+}
+
+void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
+                                const std::vector<LocalSurface>& surfaces, int blend,
+                                int num_threads, energy::PointList* points,
+                                energy::PointList* normals) {
   const int n = problem.num_points();
+  const int count = std::min(blend, problem.k() + 1);
   points->resize(n);
   normals->resize(n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::Vector3d projected, normal;
-    if (surfaces[i].Project(problem.points[i], &projected, &normal)) {
-      (*points)[i] = problem.frame.ToInput(projected);
-      (*normals)[i] = normal;
-    } else {
-      (*points)[i] = problem.frame.ToInput(problem.points[i]);
-      (*normals)[i].setZero();
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<int> candidates(count);
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      candidates[0] = i;
+      std::copy_n(problem.graph.NeighborsOf(i), count - 1, candidates.begin() + 1);
+      Eigen::Vector3d projected, normal;
+      if (ProjectOntoBlend(surfaces, candidates.data(), count, problem.points[i], &projected,
+                           &normal)) {
+        (*points)[i] = problem.frame.ToInput(projected);
+        (*normals)[i] = normal;
+      } else {
+        (*points)[i] = problem.frame.ToInput(problem.points[i]);
+        (*normals)[i].setZero();
+      }
     }
   }
 }

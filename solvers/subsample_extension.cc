@@ -1,5 +1,6 @@
 #include "solvers/subsample_extension.h"
 
+#include <algorithm>
 #include <random>
 
 #include "energy/point_kd_tree.h"
@@ -20,8 +21,8 @@ std::vector<int> ChooseSubsample(int n, int count, uint64_t seed) {
 }
 
 void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
-                    const PointIndicators& indicators, double mu_l,
-                    const FinalDenoisingOptions& options,
+                    const std::vector<LocalSurface>& surfaces, const PointIndicators& indicators,
+                    double mu_l, const FinalDenoisingOptions& options,
                     const energy::PointList& queries, int num_threads,
                     energy::PointList* projected, energy::PointList* normals,
                     PointIndicators* query_indicators) {
@@ -32,8 +33,7 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
                              nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
   tree.buildIndex();
   const std::vector<double> support = PlaneSupport(v);
-  const bool spheres = options.projection == Projection::kSphere;
-  const LocalSphereFitter fitter(problem, v);
+  const int blend = std::min(options.blended_surfaces, neighbors);
   projected->resize(count);
   normals->resize(count);
   PointIndicators& out = *query_indicators;
@@ -50,11 +50,9 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
       const energy::Point3 p = problem.frame.ToNormalized(queries[q]);
       const int found = static_cast<int>(
           tree.knnSearch(p.data(), neighbors, nearest.data(), squared_distances.data()));
-      const int host = nearest[0];
       Eigen::Vector3d on_surface, normal;
-      const LocalSurface surface =
-          spheres ? fitter.FitAround(host, p) : fitter.TangentPlane(host);
-      if (surface.Project(p, &on_surface, &normal)) {
+      if (ProjectOntoBlend(surfaces, nearest.data(), std::min(blend, found), p, &on_surface,
+                           &normal)) {
         (*projected)[q] = problem.frame.ToInput(on_surface);
         (*normals)[q] = normal;
       } else {

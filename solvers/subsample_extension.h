@@ -4,14 +4,12 @@
 // hundreds of points. Denoising a random subsample at a proportionally smaller k gives the
 // same neighbourhoods at a fraction of the cost (thinning.h says when). Every point q
 // then takes, from its k + 1 nearest subsample points j (k of the subsample's problem):
-//   - its position and normal: q projected onto the surface (sphere_projection.h) fitted to
-//     the neighbourhood of its nearest subsample point j, with the weights' falloff centred
-//     on q (centred on j, points left out came out 2.5-3.5% farther from the surface than
-//     the solved ones on cad_part; the tangent plane t_j with the plane projection);
+//   - its position and normal: q projected onto the blend (sphere_projection.h) of the
+//     surfaces of its nearest subsample points, as many as a subsample point blends;
 //   - its outlier score: that of final_denoising.h, asked of the planes h_j;
 //   - its feature score: that of its nearest subsample point.
-// A subsample point's k + 1 nearest subsample points are itself and N(i), so its outlier
-// score is its own.
+// A subsample point's k + 1 nearest subsample points are itself and N(i), so its position
+// and its outlier score are its own.
 #ifndef LPD_SOLVERS_SUBSAMPLE_EXTENSION_H_
 #define LPD_SOLVERS_SUBSAMPLE_EXTENSION_H_
 
@@ -30,12 +28,12 @@ namespace lpd::solvers {
 std::vector<int> ChooseSubsample(int n, int count, uint64_t seed);
 
 // What the points `queries` (input frame) get from the subsample's `problem`, its final
-// variables `v` and its `indicators` (problem order), with the projection of
-// options.projection; `mu_l` as in ComputeIndicators. Outputs are in the order of `queries`,
+// variables `v`, the local `surfaces` of its points and its `indicators` (problem order);
+// `mu_l` as in ComputeIndicators. Outputs are in the order of `queries`,
 // positions in the input frame.
 void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
-                    const PointIndicators& indicators, double mu_l,
-                    const FinalDenoisingOptions& options,
+                    const std::vector<LocalSurface>& surfaces, const PointIndicators& indicators,
+                    double mu_l, const FinalDenoisingOptions& options,
                     const energy::PointList& queries, int num_threads,
                     energy::PointList* projected, energy::PointList* normals,
                     PointIndicators* query_indicators);

@@ -97,6 +97,9 @@ DEFINE_int32(threads, static_cast<int>(std::max(1u, std::thread::hardware_concur
 DEFINE_string(projection, "sphere",
               "final projection of each point: plane (onto t_i, Sec. 3.4) or sphere (onto the "
               "algebraic sphere fitted to its neighbours' planes, weighted by m_ij)");
+DEFINE_int32(blended_surfaces, 30,
+             "a point moves to the mean of its projections onto the surfaces of itself and its "
+             "nearest neighbours, this many in all (at most k + 1; paper preset: 1, its own)");
 DEFINE_double(outlier_fraction, 0.65,
               "outlier score (1 - the support-weighted fitting line processes the planes of "
               "N(i) u {i} give q_i) at which i is an outlier (paper preset: 0.9)");

@@ -229,6 +229,8 @@ std::vector<Parameter> FinalStepParameters() {
           "projection", kBoth,
           [](O& o) -> solvers::Projection& { return o.final_step.projection; },
           solvers::ProjectionName, solvers::ParseProjection, "plane, sphere"),
+      Integer("blended_surfaces", kBoth,
+              [](O& o) -> int& { return o.final_step.blended_surfaces; }),
       Number("outlier_fraction", kBoth,
              [](O& o) -> double& { return o.final_step.outlier_fraction; }),
       Number("feature_threshold", kBoth,

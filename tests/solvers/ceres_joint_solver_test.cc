@@ -173,9 +173,10 @@ TEST(CeresJointSolver, NoisyCubeAgainstTheAlternatingDriver) {
   // So only the alternating schedule denoises the cube.
   energy::PointList projected, normals;
   const double input_distance = MeanDistance(cube, input);
-  ProjectOntoOwnSurfaces(problem, TangentPlaneSurfaces(alternating), &projected, &normals);
+  ProjectOntoBlendedSurfaces(problem, TangentPlaneSurfaces(alternating), 1, 1, &projected,
+                             &normals);
   EXPECT_LT(MeanDistance(cube, projected), 0.8 * input_distance);
-  ProjectOntoOwnSurfaces(problem, TangentPlaneSurfaces(joint), &projected, &normals);
+  ProjectOntoBlendedSurfaces(problem, TangentPlaneSurfaces(joint), 1, 1, &projected, &normals);
   EXPECT_GT(MeanDistance(cube, projected), 10.0 * input_distance);
 }
 

@@ -131,7 +131,7 @@ TEST(DefaultPreset, PastTheBudgetA4xDenserCloudAtAnotherScaleGivesTheSameResult)
     sparse += MeanDistance(sparse_cloud.shape, sparse_result) / std::size(kDraws);
     dense += MeanDistance(dense_cloud.shape, dense_result, kScale) / std::size(kDraws);
   }
-  EXPECT_NEAR(dense, sparse, 0.025 * sparse);
+  EXPECT_NEAR(dense, sparse, 0.02 * sparse);  // measured: 0.4%
 }
 
 TEST(DefaultPreset, ASecondPassWithoutTheOutliersGivesTheOutlierFreeResult) {
