@@ -70,7 +70,8 @@ def read(results, name):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
     metric_keys = ["mse_normalized", "mcd_normalized", "snr_db", "mean_distance_normalized",
-                   "outlier_precision", "outlier_recall", "feature_precision",
+                   "outlier_precision", "outlier_recall", "outlier_bound_precision",
+                   "outlier_bound_recall", "feature_precision",
                    "feature_recall", "seconds", "local_seconds_per_iteration",
                    "global_seconds_per_iteration", "num_output"]
     return mean_over_repetitions(rows, metric_keys)

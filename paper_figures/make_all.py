@@ -166,6 +166,31 @@ def series(results, out, name, title, x_key, x_label, metrics, group=lambda r: r
     save_plot(out, name, figure)
 
 
+def outlier_ratios(results, out):
+    """Fig. 12 with outlier ratios: detection against the labels and against the bound of a
+    threshold on the exact distance, and the kept points' distance over the outlier-free run."""
+    rows = read(results, "fig12_outlier_ratios")
+    if rows is None:
+        return
+    clean = {r["dataset"]: number(r, "mean_distance_normalized")
+             for r in rows if int(number(r, "num_outliers")) == 0}
+    body = []
+    for r in sorted(rows, key=lambda r: (r["dataset"], number(r, "num_outliers"))):
+        outliers = int(number(r, "num_outliers"))
+        if outliers == 0:
+            continue
+        ratio = 100.0 * outliers / (number(r, "num_input") - outliers)
+        body.append([r["dataset"], f"{ratio:.0f}%", fmt(number(r, "outlier_precision")),
+                     fmt(number(r, "outlier_recall")), fmt(number(r, "outlier_bound_precision")),
+                     fmt(number(r, "outlier_bound_recall")),
+                     fmt(number(r, "mean_distance_normalized") / clean.get(r["dataset"], math.nan))])
+    columns = ["model", "outliers", "precision", "recall", "bound precision", "bound recall",
+               "kept distance / outlier-free"]
+    write(out, "fig12_outlier_ratios",
+          header(rows, "Fig. 12 with outlier ratios", "fig12_outlier_ratios") +
+          table(columns, body))
+
+
 def energy_trace(record):
     """[(elapsed seconds, energy)] from a record's "seconds:energy ..." text."""
     pairs = [item.split(":") for item in (record.get("energy_trace") or "").split()]
@@ -240,6 +265,7 @@ def main():
            quality + [("outlier precision", "outlier_precision", 1, 3),
                       ("outlier recall", "outlier_recall", 1, 3),
                       ("points out", "num_output", 1, 0)])
+    outlier_ratios(args.results, args.out)
     series(args.results, args.out, "fig13_noise_levels", "Fig. 13 style noise levels",
            lambda r: 100 * number(r, "noise_sigma"), "sigma (% of FPS diameter)", quality)
     series(args.results, args.out, "fig17_cones", "Fig. 17 style cones",

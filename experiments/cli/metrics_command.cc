@@ -1,5 +1,6 @@
 // lpd metrics OUTPUT --ground_truth=SOURCE [--input=NOISY.ply]: error metrics of a denoised
 // point set, and outlier / feature detection scores when the noisy input carries labels.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -63,6 +64,16 @@ void ScoreAgainstInput(const PointCloud& output, const std::string& output_path,
   const std::vector<float>& is_outlier = RequireScalar(input, "is_outlier", FLAGS_input);
   std::vector<uint8_t> outlier_labels(is_outlier.begin(), is_outlier.end());
   PrintDetection("outlier", ScoreDetection(flagged_outlier, outlier_labels));
+  if (std::count(outlier_labels.begin(), outlier_labels.end(), 1) > 0) {
+    const Metrics noisy = ComputeMetrics(input.points, truth, FLAGS_threads);
+    if (!noisy.distances.empty()) {
+      const ThresholdDetection bound = BestDistanceThreshold(noisy.distances, outlier_labels);
+      std::printf("outlier bound: precision %.4f  recall %.4f  (the best threshold on the exact "
+                  "distance to the clean surface, %.4g of the diagonal)\n",
+                  bound.score.precision(), bound.score.recall(),
+                  bound.threshold / truth.diagonal);
+    }
+  }
   if (const std::vector<float>* distance = input.FindScalar("feature_distance")) {
     std::vector<uint8_t> feature_labels(n), detected_inliers(n);
     const double band = FLAGS_feature_band * truth.diagonal;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 #include "energy/point_kd_tree.h"
@@ -118,6 +119,41 @@ DetectionScore ScoreDetection(const std::vector<uint8_t>& detected,
     if (!detected[i] && actual[i]) ++score.false_negatives;
   }
   return score;
+}
+
+ThresholdDetection BestDistanceThreshold(const std::vector<double>& distances,
+                                         const std::vector<uint8_t>& labels) {
+  if (distances.size() != labels.size()) {
+    throw std::invalid_argument("distances and labels differ in length");
+  }
+  const long positives = std::count_if(labels.begin(), labels.end(), [](uint8_t l) { return l; });
+  if (positives == 0) throw std::invalid_argument("no labelled point to detect");
+  std::vector<size_t> farthest_first(distances.size());
+  std::iota(farthest_first.begin(), farthest_first.end(), size_t{0});
+  std::sort(farthest_first.begin(), farthest_first.end(),
+            [&](size_t a, size_t b) { return distances[a] > distances[b]; });
+  ThresholdDetection best;
+  double best_score = -1.0;
+  long flagged = 0, hits = 0;
+  for (size_t rank = 0; rank < farthest_first.size(); ++rank) {
+    ++flagged;
+    hits += labels[farthest_first[rank]] != 0;
+    // Ties flag together: a threshold cannot split equal distances.
+    const bool tie_follows = rank + 1 < farthest_first.size() &&
+                             distances[farthest_first[rank + 1]] ==
+                                 distances[farthest_first[rank]];
+    if (tie_follows) continue;
+    const double score = std::min(static_cast<double>(hits) / flagged,
+                                  static_cast<double>(hits) / positives);
+    if (score > best_score) {
+      best_score = score;
+      best.threshold = distances[farthest_first[rank]];
+      best.score.true_positives = hits;
+      best.score.false_positives = flagged - hits;
+      best.score.false_negatives = positives - hits;
+    }
+  }
+  return best;
 }
 
 std::vector<uint8_t> FeatureLabels(const PointList& clean_points, const GroundTruth& truth,

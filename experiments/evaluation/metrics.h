@@ -56,6 +56,21 @@ struct DetectionScore {
 DetectionScore ScoreDetection(const std::vector<uint8_t>& detected,
                               const std::vector<uint8_t>& actual);
 
+// The best detector that knows each point's exact distance to the clean surface and flags
+// the points beyond a threshold. For outliers uniform in a box and Gaussian inliers, the
+// likelihood ratio grows with that distance, so no detector that sees only the positions
+// beats this one on both precision and recall (Neyman-Pearson): an upper bound for outlier
+// detection on a labelled input. `threshold` is the smallest flagged distance of the
+// threshold that maximizes min(precision, recall).
+struct ThresholdDetection {
+  double threshold = 0.0;
+  DetectionScore score;
+};
+
+// Throws std::invalid_argument if the two vectors differ in length or have no labelled point.
+ThresholdDetection BestDistanceThreshold(const std::vector<double>& distances,
+                                         const std::vector<uint8_t>& labels);
+
 // Labels the points within `band` of a sharp feature of the ground truth (which must have
 // feature distances).
 std::vector<uint8_t> FeatureLabels(const energy::PointList& clean_points,

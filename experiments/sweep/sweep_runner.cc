@@ -215,6 +215,13 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
   }
   if (!input.is_outlier.empty() && !run.outlier_flags.empty() && num_outliers > 0) {
     AddDetection("outlier", ScoreDetection(run.outlier_flags, input.is_outlier), &record);
+    if (truth && truth->surface_distances) {
+      AddDetection("outlier_bound",
+                   BestDistanceThreshold(truth->surface_distances(input.points, num_threads),
+                                         input.is_outlier)
+                       .score,
+                   &record);
+    }
   }
   if (truth && truth->feature_distance && !run.feature_flags.empty()) {
     // Only clean points have a position to label; outliers are left out of the score.
@@ -312,7 +319,8 @@ const std::vector<std::string>& ResultColumns() {
     for (const char* name :
          {"num_output", "mse", "mse_normalized", "mcd", "mcd_normalized", "snr_db",
           "mean_distance", "mean_distance_normalized", "rms_distance_normalized",
-          "max_distance_normalized", "outlier_precision", "outlier_recall", "feature_precision",
+          "max_distance_normalized", "outlier_precision", "outlier_recall",
+          "outlier_bound_precision", "outlier_bound_recall", "feature_precision",
           "feature_recall", "iterations", "final_energy", "seconds", "setup_seconds",
           "local_seconds_per_iteration", "global_seconds_per_iteration", "threads",
           "git_revision", "machine"}) {

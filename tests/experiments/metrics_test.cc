@@ -97,5 +97,28 @@ TEST(Metrics, DetectionPrecisionAndRecall) {
   EXPECT_THROW(ScoreDetection({1}, {1, 0}), std::invalid_argument);
 }
 
+TEST(Metrics, TheDistanceThresholdBoundIsTheBestOfEveryThreshold) {
+  // Farthest first: 8 (inlier), 7, 6, 5 (outliers), 1 (inlier), 0.5 (outlier), 0.2, 0.1.
+  // Flagging the top 4 gives 3 of 4 outliers at precision 3/4: min 0.75; the top 6 give
+  // precision 4/6 and recall 1; every other cut is lower.
+  const std::vector<double> distances = {0.1, 7.0, 1.0, 5.0, 0.2, 6.0, 8.0, 0.5};
+  const std::vector<uint8_t> labels = {0, 1, 0, 1, 0, 1, 0, 1};
+  const ThresholdDetection best = BestDistanceThreshold(distances, labels);
+  EXPECT_EQ(best.threshold, 5.0);
+  EXPECT_EQ(best.score.true_positives, 3);
+  EXPECT_EQ(best.score.false_positives, 1);
+  EXPECT_EQ(best.score.false_negatives, 1);
+  // Equal distances cannot be split: with the inlier at 1 moved to 5, the cut at 5 flags 3
+  // outliers and 2 inliers (min 0.6), so the best cut is at 0.5: 4 outliers, 2 inliers.
+  std::vector<double> tied = distances;
+  tied[2] = 5.0;
+  const ThresholdDetection tie = BestDistanceThreshold(tied, labels);
+  EXPECT_EQ(tie.threshold, 0.5);
+  EXPECT_EQ(tie.score.true_positives, 4);
+  EXPECT_EQ(tie.score.false_positives, 2);
+  EXPECT_THROW(BestDistanceThreshold({1.0}, {0}), std::invalid_argument);
+  EXPECT_THROW(BestDistanceThreshold({1.0}, {1, 0}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace lpd::experiments
