@@ -8,6 +8,7 @@ packages=(
   build-essential cmake git pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
   libnanoflann-dev libgtest-dev libbenchmark-dev libcgal-dev libyaml-cpp-dev
+  libopenmpi-dev openmpi-bin
   python3 python3-matplotlib python3-numpy time
   "$@"
 )

@@ -101,6 +101,11 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   // the three degrees of freedom the fitted plane absorbs given back.
   size.noise_sigma = 1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0));
   size.spacing = std::sqrt(2.0 * M_PI * Median(&alpha) / k);
+  if (!(size.spacing > 0.0)) {
+    throw std::invalid_argument(
+        "most points coincide with their " + std::to_string(k) +
+        " nearest neighbours: no spacing to choose k from (remove the duplicates or give --k)");
+  }
   const double radius_in_spacings = options.radius_in_sigmas * size.noise_sigma / size.spacing;
   const double chosen = M_PI * radius_in_spacings * radius_in_spacings;
   const int largest = std::min<int>(options.max_k, n - 1);

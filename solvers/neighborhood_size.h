@@ -44,7 +44,8 @@ struct NeighborhoodSize {
   int k = 0;
 };
 
-// Throws std::invalid_argument (as energy::BuildProblem) when `points` has fewer than
+// Throws std::invalid_argument (as energy::BuildProblem) when most points coincide with their
+// probe_k nearest neighbours (no spacing), or when `points` has fewer than
 // probe_k + 1 points or no extent.
 NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                         const NeighborhoodSizeOptions& options,

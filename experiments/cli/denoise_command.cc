@@ -12,6 +12,7 @@
 #include "experiments/cli/commands.h"
 #include "energy/wall_clock.h"
 #include "experiments/cli/denoise_flags.h"
+#include "experiments/cli/tiled_denoise.h"
 #include "experiments/io/atomic_output_file.h"
 #include "experiments/io/interruption.h"
 #include "experiments/io/point_cloud_io.h"
@@ -36,6 +37,11 @@ DEFINE_uint64(seed, 1, "random seed of generated samples (and, plus one, of thei
 DEFINE_int32(default_points, 20000, "number of samples of the built-in default shape");
 DEFINE_double(default_noise, 0.005,
               "Gaussian noise of the built-in shape, as a fraction of its bounding-box diagonal");
+DEFINE_int32(tile_points, 0,
+             "denoise in spatial tiles of at most this many points, each with a halo of its "
+             "neighbours (0: one problem); under `mpirun -np R` the R processes share the tiles");
+DEFINE_double(halo_radii, 3.0,
+              "width of a tile's halo, in neighbourhood radii sqrt(k / pi) x spacing");
 
 namespace lpd::experiments {
 namespace {
@@ -235,6 +241,30 @@ void PrintBuiltInDistance(const DefaultInput& built_in, const energy::PointList&
       after <= before ? before / after : after / before, after <= before ? "lower" : "higher");
 }
 
+// The tiled run (tiled_denoise.h): every rank reads the input, rank 0 writes the output.
+int RunTiled(const std::vector<std::string>& arguments, const solvers::DenoiseOptions& options,
+             const solvers::TilingOptions& tiling) {
+  const DenoiseInput input = LoadInput(arguments);
+  TiledRun run = DenoiseInTiles(input.points, options, tiling, FlagGiven("threads"), FLAGS_quiet);
+  if (!run.is_root) return 0;
+  ThrowIfInterrupted();
+  const solvers::DenoiseResult& result = run.result;
+  const PointCloud cloud = MakeOutputCloud(result);
+  if (!FLAGS_output.empty()) WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
+  std::printf(
+      "points in %zu, out %zu, outliers flagged %d, removed %d, feature points %d, time %.2f s\n",
+      result.projected.size(), cloud.points.size(), result.num_outliers, result.num_removed,
+      result.num_features, run.seconds);
+  std::printf("tiles %d on %d process%s x %d thread%s, halo points %ld, k %d-%d, at most %d "
+              "iterations, %d of %d tiles converged\n",
+              run.tiles, run.ranks, run.ranks > 1 ? "es" : "", run.threads_per_rank,
+              run.threads_per_rank > 1 ? "s" : "", run.halo_points, run.min_k, run.max_k,
+              run.max_iterations, run.converged_tiles, run.tiles);
+  if (input.is_built_in) PrintBuiltInDistance(input.built_in, cloud.points);
+  if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int RunDenoiseCommand(const std::vector<std::string>& arguments) {
@@ -258,6 +288,15 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   }
   CheckOutputs(resume ? FLAGS_resume : arguments.empty() ? "" : arguments[0], resume);
 
+  const solvers::TilingOptions tiling{FLAGS_tile_points, FLAGS_halo_radii};
+  std::string invalid;
+  if (!tiling.IsValid(&invalid)) throw std::invalid_argument(invalid);
+  if (tiling.tile_points > 0) {
+    if (resume || !FLAGS_save_state.empty()) {
+      throw std::invalid_argument("--tile_points cannot be combined with --save_state or --resume");
+    }
+    return RunTiled(arguments, options, tiling);
+  }
   const Clock::time_point start = Clock::now();
   DenoiseInput input;
   if (!resume) {

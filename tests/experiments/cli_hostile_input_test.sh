@@ -169,6 +169,8 @@ refuse lambda_1e400 1 denoise "$dir/plain.xyz" -o out.ply --lambda=1e400
 refuse mu_l_nan 1 denoise "$dir/plain.xyz" -o out.ply --mu_l=nan
 refuse max_k_negative 1 denoise "$dir/plain.xyz" -o out.ply --max_k=-4
 refuse max_problem_size_zero 1 denoise "$dir/plain.xyz" -o out.ply --max_problem_size=0
+(for i in $(seq 300); do echo "1 2 3"; done; echo "1 2 4") >"$dir/mostly_duplicates.xyz"
+refuse mostly_duplicates 1 denoise "$dir/mostly_duplicates.xyz" -o out.ply
 {
   echo "name: huge"
   echo "datasets:"

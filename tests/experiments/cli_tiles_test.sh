@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# `lpd denoise --tile_points`: in one process and, when mpirun is installed, on 2 ranks. The
+# ranks give the one-process result; tiles too small for a neighbourhood, more ranks than
+# tiles and a tile that fails end the run with exit code 1, a message naming the problem (the
+# tile, for a failure) and no output file.
+# Usage: cli_tiles_test.sh PATH_TO_LPD
+lpd=$(realpath "$1")
+source "$(dirname "$0")/cli_test_lib.sh"
+# mpirun refuses root without these (CI runs as root).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_WAIT_POLICY=PASSIVE
+cases=0
+
+# refused NAME PATTERN COMMAND...: exits with 1, stderr matches PATTERN, no out.* left.
+refused() {
+  local name=$1 pattern=$2; shift 2
+  cases=$((cases + 1))
+  (cd "$dir" && timeout 120 "$@" >"$dir/stdout" 2>"$dir/stderr")
+  local code=$?
+  [ "$code" -ne 0 ] || fail "$name: exit code 0"
+  grep -q -- "$pattern" "$dir/stderr" || fail "$name: no '$pattern' in: $(head -3 "$dir/stderr")"
+  ls "$dir" | grep -q '^out' && fail "$name: left an output file"
+  echo "$name: exit $code: $(grep -m1 -- "$pattern" "$dir/stderr")"
+}
+
+"$lpd" noise --shape=cad_part --points=6000 --sigma=0.005 -o "$dir/cloud.xyz" --quiet >/dev/null ||
+  fail "lpd noise"
+# Duplicates far from the surface: the k-d split gives them tiles of their own, which have no
+# extent and fail.
+cp "$dir/cloud.xyz" "$dir/duplicates.xyz"
+for i in $(seq 3000); do echo "5 5 5"; done >>"$dir/duplicates.xyz"
+
+cases=$((cases + 1))
+"$lpd" denoise "$dir/cloud.xyz" -o "$dir/one.xyz" --tile_points=1500 --threads=2 --quiet \
+  >"$dir/stdout" 2>"$dir/stderr" || fail "one process: $(tail -1 "$dir/stderr")"
+grep -q "tiles 4 on 1 process" "$dir/stdout" || fail "one process: $(cat "$dir/stdout")"
+[ "$(wc -l <"$dir/one.xyz")" -gt 5900 ] || fail "one process: $(wc -l <"$dir/one.xyz") points out"
+
+refused tiles_below_a_neighbourhood "fewer than the 41" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=40
+refused tiles_with_resume "cannot be combined" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --save_state=out.lpds
+refused halo_radii_zero "halo_radii" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --halo_radii=0
+refused failing_tile "tile [0-9]* of [0-9]* (.*) failed" "$lpd" denoise duplicates.xyz -o out.xyz --tile_points=1500
+
+if command -v mpirun >/dev/null; then
+  mpi=(mpirun --oversubscribe -np 2)
+  cases=$((cases + 1))
+  "${mpi[@]}" "$lpd" denoise "$dir/cloud.xyz" -o "$dir/two.xyz" --tile_points=1500 --quiet \
+    >"$dir/stdout" 2>"$dir/stderr" || fail "2 ranks: $(tail -3 "$dir/stderr")"
+  grep -q "tiles 4 on 2 processes" "$dir/stdout" || fail "2 ranks: $(cat "$dir/stdout")"
+  # The same tiles with 1 thread each instead of 2: the same points up to rounding.
+  python3 - "$dir/one.xyz" "$dir/two.xyz" <<'PY' || fail "2 ranks differ from one process"
+import sys
+one = [list(map(float, l.split())) for l in open(sys.argv[1])]
+two = [list(map(float, l.split())) for l in open(sys.argv[2])]
+assert len(one) == len(two), (len(one), len(two))
+worst = max(abs(a - b) for p, q in zip(one, two) for a, b in zip(p, q))
+assert worst < 1e-6, worst
+PY
+  refused more_ranks_than_tiles "2 ranks for 1 tile" "${mpi[@]}" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=6000
+  refused failing_tile_on_a_rank "tile [0-9]* of [0-9]* (.*rank [01]) failed" "${mpi[@]}" "$lpd" denoise duplicates.xyz -o out.xyz --tile_points=1500
+else
+  echo "mpirun not found: the 2-rank cases are skipped (apt-get install openmpi-bin)"
+fi
+finish "$cases tiled cases"

@@ -1,0 +1,154 @@
+// Tiles and halos (solvers/tiling.h): the k-d split puts every point in one tile of balanced
+// size; the halo holds exactly the points within its width of the tile's box (brute force);
+// its width follows from the spacing of a grid; one tile is the untiled run bit for bit; and
+// eight tiles give the untiled result, also at the seams.
+#include "solvers/tiling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "experiments/shapes/noise.h"
+#include "experiments/shapes/shape_catalog.h"
+#include "solvers/presets.h"
+
+namespace lpd::solvers {
+namespace {
+
+energy::PointList RandomPoints(int n, uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  energy::PointList points(n);
+  for (energy::Point3& p : points) p = {2.0 * uniform(random), uniform(random), 0.5 * uniform(random)};
+  return points;
+}
+
+DenoiseOptions Defaults() {
+  DenoiseOptions options = PresetOptions(Preset::kDefault);
+  options.settings.num_threads = 2;
+  return options;
+}
+
+TEST(PlanTiles, EveryPointIsInOneTileOfBalancedSize) {
+  const energy::PointList points = RandomPoints(10007, 1);
+  const std::vector<std::vector<int>> tiles = PlanTiles(points, 1000);
+  std::vector<int> times(points.size(), 0);
+  for (const std::vector<int>& tile : tiles) {
+    EXPECT_LE(tile.size(), 1000u);
+    EXPECT_GE(tile.size(), 500u);  // a median split of more than 1000 points
+    EXPECT_TRUE(std::is_sorted(tile.begin(), tile.end()));
+    for (int i : tile) ++times[i];
+  }
+  EXPECT_EQ(tiles.size(), 16u);  // 10007 halves four times to 626 or 625
+  for (size_t i = 0; i < points.size(); ++i) ASSERT_EQ(times[i], 1) << i;
+  EXPECT_EQ(PlanTiles(points, 20000).size(), 1u);
+  EXPECT_THROW(PlanTiles(points, 0), std::invalid_argument);
+}
+
+TEST(HaloOf, HoldsExactlyThePointsWithinTheWidthOfTheTilesBox) {
+  const energy::PointList points = RandomPoints(5000, 2);
+  const std::vector<std::vector<int>> tiles = PlanTiles(points, 700);
+  const std::vector<int>& own = tiles[3];
+  Eigen::Vector3d low = points[own[0]], high = points[own[0]];
+  for (int i : own) {
+    low = low.cwiseMin(points[i]);
+    high = high.cwiseMax(points[i]);
+  }
+  constexpr double kWidth = 0.15;
+  const std::vector<int> halo = HaloOf(points, own, kWidth);
+  std::vector<int> expected;
+  for (int i = 0; i < 5000; ++i) {
+    if (std::binary_search(own.begin(), own.end(), i)) continue;
+    const Eigen::Vector3d outside =
+        (low - points[i]).cwiseMax(points[i] - high).cwiseMax(Eigen::Vector3d::Zero());
+    if (outside.norm() <= kWidth) expected.push_back(i);
+  }
+  EXPECT_EQ(halo, expected);
+  EXPECT_GT(halo.size(), 100u);
+}
+
+TEST(HaloWidth, IsTheNeighbourhoodRadiusOfAGrid) {
+  // A square grid of spacing h: k = 20 neighbours fill a disc of radius h sqrt(20 / pi).
+  constexpr double kSpacing = 0.01;
+  energy::PointList grid;
+  for (int a = 0; a < 100; ++a) {
+    for (int b = 0; b < 100; ++b) grid.emplace_back(a * kSpacing, b * kSpacing, 0.0);
+  }
+  DenoiseOptions options = Defaults();
+  options.choose_k = false;
+  options.problem.k = 20;
+  const double expected = 2.0 * kSpacing * std::sqrt(20.0 / 3.14159265358979);
+  EXPECT_NEAR(HaloWidth(grid, options, 2.0), expected, 0.05 * expected);
+}
+
+struct NoisyShape {
+  experiments::ProceduralShape shape = experiments::MakeShape({"cad_part", {}});
+  energy::PointList points;
+};
+
+NoisyShape NoisyCadPart(int n) {
+  NoisyShape noisy;
+  experiments::NoiseOptions noise;
+  noise.sigma = 0.005;
+  noise.seed = 5;
+  noisy.points = experiments::ApplyNoise(noisy.shape.Sample(n, 4).points, {}, noise).points;
+  return noisy;
+}
+
+TEST(DenoiseTile, OneTileIsTheUntiledRun) {
+  const NoisyShape noisy = NoisyCadPart(3000);
+  const DenoiseOptions options = Defaults();
+  const std::vector<std::vector<int>> tiles = PlanTiles(noisy.points, 3000);
+  ASSERT_EQ(tiles.size(), 1u);
+  const TileOutcome tile = DenoiseTile(noisy.points, tiles[0], options, TilingOptions{3000});
+  const DenoiseResult whole = DenoisePointSet(noisy.points, options);
+  EXPECT_EQ(tile.halo_points, 0);
+  for (size_t i = 0; i < noisy.points.size(); ++i) {
+    ASSERT_EQ(tile.projected[i], whole.projected[i]) << i;
+    ASSERT_EQ(tile.kept[i], whole.kept[i]) << i;
+  }
+}
+
+TEST(DenoiseTile, EightTilesGiveTheUntiledResultAlsoAtTheSeams) {
+  const NoisyShape noisy = NoisyCadPart(16000);
+  const DenoiseOptions options = Defaults();
+  const TilingOptions tiling{2000};
+  const std::vector<std::vector<int>> tiles = PlanTiles(noisy.points, tiling.tile_points);
+  ASSERT_EQ(tiles.size(), 8u);
+  DenoiseResult tiled;
+  ResizeForTiles(noisy.points.size(), &tiled);
+  // A point within one halo of a tile border is in another tile's halo.
+  std::vector<uint8_t> at_seam(noisy.points.size(), 0);
+  for (const std::vector<int>& own : tiles) {
+    PlaceTile(DenoiseTile(noisy.points, own, options, tiling), &tiled);
+    energy::PointList own_points;
+    for (int i : own) own_points.push_back(noisy.points[i]);
+    for (int i : HaloOf(noisy.points, own, HaloWidth(own_points, options, tiling.halo_radii))) {
+      at_seam[i] = 1;
+    }
+  }
+  const DenoiseResult whole = DenoisePointSet(noisy.points, options);
+  double tiled_sum = 0.0, whole_sum = 0.0, tiled_seam = 0.0, whole_seam = 0.0;
+  int seam_points = 0;
+  for (size_t i = 0; i < noisy.points.size(); ++i) {
+    const double a = noisy.shape.DistanceToSurface(tiled.projected[i]);
+    const double b = noisy.shape.DistanceToSurface(whole.projected[i]);
+    tiled_sum += a;
+    whole_sum += b;
+    if (at_seam[i]) {
+      tiled_seam += a;
+      whole_seam += b;
+      ++seam_points;
+    }
+  }
+  EXPECT_GT(seam_points, 4000);
+  // Measured: the tiled result 0.5% farther from the surface overall and 0.2% at the 11,439
+  // seam points.
+  EXPECT_NEAR(tiled_sum, whole_sum, 0.05 * whole_sum);
+  EXPECT_NEAR(tiled_seam, whole_seam, 0.10 * whole_seam);
+}
+
+}  // namespace
+}  // namespace lpd::solvers
