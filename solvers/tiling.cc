@@ -124,7 +124,7 @@ TileOutcome DenoiseTile(const energy::PointList& points, const std::vector<int>&
   tile.indicators.is_outlier.assign(all.is_outlier.begin(), all.is_outlier.begin() + n);
   tile.indicators.is_feature.assign(all.is_feature.begin(), all.is_feature.begin() + n);
   tile.kept.assign(result.kept.begin(), result.kept.begin() + n);
-  tile.halo_points = static_cast<int>(halo.size());
+  tile.halo = halo;
   tile.k = result.neighborhood.k;
   tile.solved_points = result.solved_points;
   tile.iterations = result.summary.num_iterations;

@@ -56,7 +56,7 @@ struct TileOutcome {
   energy::PointList normals;
   PointIndicators indicators;
   std::vector<uint8_t> kept;
-  int halo_points = 0;
+  std::vector<int> halo;          // input indices of the halo points
   int k = 0;
   int solved_points = 0;          // of the tile and its halo (thinning.h)
   int iterations = 0;

@@ -94,10 +94,11 @@ solvers::IterationCallback ProgressPrinter(solvers::Solver solver, bool quiet) {
 
 PointCloud MakeOutputCloud(const solvers::DenoiseResult& result) {
   PointCloud cloud;
-  std::vector<float> source_index, outlier, outlier_score, feature, feature_score;
+  std::vector<uint32_t> source_index;
+  std::vector<float> outlier, outlier_score, feature, feature_score;
   for (size_t i = 0; i < result.projected.size(); ++i) {
     if (!result.kept[i]) continue;
-    source_index.push_back(static_cast<float>(i));
+    source_index.push_back(static_cast<uint32_t>(i));
     cloud.points.push_back(result.projected[i]);
     cloud.normals.push_back(result.normals[i]);
     outlier.push_back(result.indicators.is_outlier[i]);
@@ -105,8 +106,8 @@ PointCloud MakeOutputCloud(const solvers::DenoiseResult& result) {
     feature.push_back(result.indicators.is_feature[i]);
     feature_score.push_back(static_cast<float>(result.indicators.feature_score[i]));
   }
-  cloud.scalars = {{"source_index", source_index},
-                   {"outlier", outlier},
+  cloud.index_fields = {{"source_index", source_index}};
+  cloud.scalars = {{"outlier", outlier},
                    {"outlier_score", outlier_score},
                    {"feature", feature},
                    {"feature_score", feature_score}};
@@ -249,7 +250,16 @@ int RunTiled(const std::vector<std::string>& arguments, const solvers::DenoiseOp
   if (!run.is_root) return 0;
   ThrowIfInterrupted();
   const solvers::DenoiseResult& result = run.result;
-  const PointCloud cloud = MakeOutputCloud(result);
+  PointCloud cloud = MakeOutputCloud(result);
+  std::vector<uint32_t> tile;
+  std::vector<float> seam;
+  for (size_t i = 0; i < result.kept.size(); ++i) {
+    if (!result.kept[i]) continue;
+    tile.push_back(static_cast<uint32_t>(run.tile_of[i]));
+    seam.push_back(run.at_seam[i]);
+  }
+  cloud.index_fields.emplace_back("tile", std::move(tile));
+  cloud.scalars.emplace_back("seam", std::move(seam));
   if (!FLAGS_output.empty()) WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
   std::printf(
       "points in %zu, out %zu, outliers flagged %d, removed %d, feature points %d, time %.2f s\n",

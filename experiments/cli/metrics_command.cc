@@ -47,7 +47,14 @@ void PrintDetection(const char* what, const DetectionScore& score) {
 void ScoreAgainstInput(const PointCloud& output, const std::string& output_path,
                        const GroundTruth& truth) {
   const PointCloud input = ReadPointCloud(FLAGS_input);
-  const std::vector<float>& source = RequireScalar(output, "source_index", output_path);
+  // source_index is a uint property; files written before it was are read as floats.
+  std::vector<double> source;
+  if (const std::vector<uint32_t>* index = output.FindIndexField("source_index")) {
+    source.assign(index->begin(), index->end());
+  } else {
+    const std::vector<float>& as_float = RequireScalar(output, "source_index", output_path);
+    source.assign(as_float.begin(), as_float.end());
+  }
   const std::vector<float>& outlier = RequireScalar(output, "outlier", output_path);
   const std::vector<float>& feature = RequireScalar(output, "feature", output_path);
   const size_t n = input.points.size();

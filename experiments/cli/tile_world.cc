@@ -12,16 +12,17 @@
 namespace lpd::experiments {
 namespace {
 
-// A tile's outcome as one array of doubles: a header, then one record per own point.
-constexpr int kHeader = 8;   // index, count, halo, k, solved, iterations, converged, seconds
+// A tile's outcome as one array of doubles: a header, one record per own point, then the
+// halo's input indices.
+constexpr int kHeader = 8;   // index, count, halo count, k, solved, iterations, converged, seconds
 constexpr int kRecord = 12;  // input index, position, normal, two scores, three flags
 
 [[maybe_unused]] std::vector<double> Pack(int index, const solvers::TileOutcome& tile) {
   const size_t n = tile.own.size();
   std::vector<double> buffer;
-  buffer.reserve(kHeader + kRecord * n);
+  buffer.reserve(kHeader + kRecord * n + tile.halo.size());
   buffer.insert(buffer.end(), {static_cast<double>(index), static_cast<double>(n),
-                               static_cast<double>(tile.halo_points), static_cast<double>(tile.k),
+                               static_cast<double>(tile.halo.size()), static_cast<double>(tile.k),
                                static_cast<double>(tile.solved_points),
                                static_cast<double>(tile.iterations),
                                tile.converged ? 1.0 : 0.0, tile.seconds});
@@ -35,6 +36,7 @@ constexpr int kRecord = 12;  // input index, position, normal, two scores, three
     buffer.push_back(tile.indicators.is_feature[a]);
     buffer.push_back(tile.kept[a]);
   }
+  buffer.insert(buffer.end(), tile.halo.begin(), tile.halo.end());
   return buffer;
 }
 
@@ -42,7 +44,7 @@ constexpr int kRecord = 12;  // input index, position, normal, two scores, three
                              solvers::TileOutcome* tile) {
   *index = static_cast<int>(buffer[0]);
   const size_t n = static_cast<size_t>(buffer[1]);
-  tile->halo_points = static_cast<int>(buffer[2]);
+  const size_t halo = static_cast<size_t>(buffer[2]);
   tile->k = static_cast<int>(buffer[3]);
   tile->solved_points = static_cast<int>(buffer[4]);
   tile->iterations = static_cast<int>(buffer[5]);
@@ -68,6 +70,8 @@ constexpr int kRecord = 12;  // input index, position, normal, two scores, three
     indicators.is_feature[a] = record[10] != 0.0;
     tile->kept[a] = record[11] != 0.0;
   }
+  const double* halo_begin = buffer.data() + kHeader + kRecord * n;
+  tile->halo.assign(halo_begin, halo_begin + halo);
 }
 
 #ifdef LPD_WITH_MPI

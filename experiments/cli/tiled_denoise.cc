@@ -28,24 +28,28 @@ class Assembly {
       : num_points_(num_points), num_tiles_(num_tiles), quiet_(quiet), run_(run),
         start_(Clock::now()) {
     solvers::ResizeForTiles(num_points, &run->result);
+    run->tile_of.resize(num_points);
+    run->at_seam.assign(num_points, 0);
   }
 
   void Add(int index, const solvers::TileOutcome& tile) {
     solvers::PlaceTile(tile, &run_->result);
+    for (int i : tile.own) run_->tile_of[i] = index;
+    for (int i : tile.halo) run_->at_seam[i] = 1;
     ++done_;
     points_done_ += tile.own.size();
     run_->converged_tiles += tile.converged;
     run_->min_k = done_ == 1 ? tile.k : std::min(run_->min_k, tile.k);
     run_->max_k = std::max(run_->max_k, tile.k);
     run_->max_iterations = std::max(run_->max_iterations, tile.iterations);
-    run_->halo_points += tile.halo_points;
+    run_->halo_points += static_cast<long>(tile.halo.size());
     if (quiet_) return;
     const double elapsed = SecondsSince(start_);
     const double rate = points_done_ / std::max(elapsed, 1e-9);
     std::fprintf(stderr,
-                 "tile %d/%d done (tile %d: %zu points + %d halo, k %d, %d iterations, %.1f s); "
+                 "tile %d/%d done (tile %d: %zu points + %zu halo, k %d, %d iterations, %.1f s); "
                  "%.3g points/s, about %.0f s left\n",
-                 done_, num_tiles_, index + 1, tile.own.size(), tile.halo_points, tile.k,
+                 done_, num_tiles_, index + 1, tile.own.size(), tile.halo.size(), tile.k,
                  tile.iterations, tile.seconds, rate,
                  (num_points_ - points_done_) / std::max(rate, 1e-9));
   }

@@ -19,6 +19,8 @@ namespace lpd::experiments {
 struct TiledRun {
   bool is_root = true;
   solvers::DenoiseResult result;  // rank 0: one entry per input point
+  std::vector<int> tile_of;        // rank 0: the tile of each input point (from 0)
+  std::vector<uint8_t> at_seam;    // rank 0: 1 for the points in another tile's halo
   int tiles = 0;
   int ranks = 1;
   int threads_per_rank = 1;

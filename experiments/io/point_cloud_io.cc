@@ -364,6 +364,7 @@ struct VertexLayout {
   int xyz[3] = {-1, -1, -1};
   int normal[3] = {-1, -1, -1};
   std::vector<size_t> scalars;
+  std::vector<size_t> index_fields;  // the uint properties
 
   bool has_normals() const { return normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0; }
 };
@@ -380,7 +381,10 @@ VertexLayout LayoutOf(const std::string& path, const PlyElement& vertex) {
         layout.normal[c] = static_cast<int>(a), placed = true;
       }
     }
-    if (!placed && property.count_type.empty()) layout.scalars.push_back(a);
+    if (!placed && property.count_type.empty()) {
+      const bool index = property.type == "uint" || property.type == "uint32";
+      (index ? layout.index_fields : layout.scalars).push_back(a);
+    }
   }
   if (layout.xyz[0] < 0 || layout.xyz[1] < 0 || layout.xyz[2] < 0) {
     Fail(path, 0, "the vertex element has no x, y, z properties");
@@ -449,6 +453,9 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
     }
     const VertexLayout layout = LayoutOf(path, element);
     for (size_t a : layout.scalars) cloud.scalars.push_back({element.properties[a].name, {}});
+    for (size_t a : layout.index_fields) {
+      cloud.index_fields.push_back({element.properties[a].name, {}});
+    }
     cloud.points.reserve(element.count);
     for (long item = 0; item < element.count; ++item) {
       ReadPlyItem(path, in, header.format, element, item, &number, &values);
@@ -464,6 +471,10 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
       }
       for (size_t s = 0; s < layout.scalars.size(); ++s) {
         cloud.scalars[s].second.push_back(static_cast<float>(values[layout.scalars[s]]));
+      }
+      for (size_t s = 0; s < layout.index_fields.size(); ++s) {
+        cloud.index_fields[s].second.push_back(
+            static_cast<uint32_t>(values[layout.index_fields[s]]));
       }
     }
     break;
@@ -481,6 +492,7 @@ void WritePly(const std::string& path, const PointCloud& cloud, bool overwrite) 
   out << "property double x\nproperty double y\nproperty double z\n";
   if (with_normals) out << "property float nx\nproperty float ny\nproperty float nz\n";
   for (const auto& scalar : cloud.scalars) out << "property float " << scalar.first << "\n";
+  for (const auto& field : cloud.index_fields) out << "property uint " << field.first << "\n";
   out << "end_header\n";
   if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
   std::vector<char> record;
@@ -496,6 +508,7 @@ void WritePly(const std::string& path, const PointCloud& cloud, bool overwrite) 
       append(normal.data(), 3 * sizeof(float));
     }
     for (const auto& scalar : cloud.scalars) append(&scalar.second[i], sizeof(float));
+    for (const auto& field : cloud.index_fields) append(&field.second[i], sizeof(uint32_t));
     out.write(record.data(), static_cast<std::streamsize>(record.size()));
   }
   file.Commit();
@@ -558,10 +571,22 @@ const std::vector<float>* PointCloud::FindScalar(const std::string& name) const 
   return nullptr;
 }
 
+const std::vector<uint32_t>* PointCloud::FindIndexField(const std::string& name) const {
+  for (const auto& field : index_fields) {
+    if (field.first == name) return &field.second;
+  }
+  return nullptr;
+}
+
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite) {
   for (const auto& scalar : cloud.scalars) {
     if (scalar.second.size() != cloud.points.size()) {
       throw std::invalid_argument("scalar property '" + scalar.first + "' has the wrong size");
+    }
+  }
+  for (const auto& field : cloud.index_fields) {
+    if (field.second.size() != cloud.points.size()) {
+      throw std::invalid_argument("index property '" + field.first + "' has the wrong size");
     }
   }
   const std::string extension = FileExtension(path);

@@ -12,6 +12,7 @@
 #ifndef LPD_EXPERIMENTS_IO_POINT_CLOUD_IO_H_
 #define LPD_EXPERIMENTS_IO_POINT_CLOUD_IO_H_
 
+#include <cstdint>
 #include <istream>
 #include <string>
 #include <utility>
@@ -26,10 +27,15 @@ struct PointCloud {
   energy::PointList normals;  // empty, or one per point
   // Named per-point scalar properties (e.g. "outlier", "feature_score"), one value per point.
   std::vector<std::pair<std::string, std::vector<float>>> scalars;
+  // Named per-point indices ("source_index", "tile"), PLY type uint: exact beyond the 2^24
+  // where a float stops counting. A PLY "uint" property is read into these.
+  std::vector<std::pair<std::string, std::vector<uint32_t>>> index_fields;
   std::vector<std::string> comments;  // PLY header comments (one line each)
 
   // The scalar property called `name`, or nullptr.
   const std::vector<float>* FindScalar(const std::string& name) const;
+  // The index field called `name`, or nullptr.
+  const std::vector<uint32_t>* FindIndexField(const std::string& name) const;
 };
 
 // Throws std::runtime_error with a one-line reason on any problem, also when a PLY header

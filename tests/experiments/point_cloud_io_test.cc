@@ -71,11 +71,28 @@ TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
   EXPECT_EQ(points[0], cloud.points[0]);
   EXPECT_EQ(points[1], cloud.points[1]);
   // An existing output is never replaced without `overwrite`, and is left intact.
-  EXPECT_THROW(WritePointCloud(path, PointCloud{{{9, 9, 9}}, {}, {}, {}}, false), std::runtime_error);
+  EXPECT_THROW(WritePointCloud(path, PointCloud{{{9, 9, 9}}, {}, {}, {}, {}}, false),
+               std::runtime_error);
   EXPECT_EQ(ReadPoints(path).size(), 2u);
   const std::string xyz = (directory_ / "out.xyz").string();
   WritePointCloud(xyz, cloud, false);
   EXPECT_EQ(ReadPoints(xyz)[0], cloud.points[0]);
+}
+
+TEST_F(PointCloudIoTest, IndexFieldsStayExactPastTheFloatMantissa) {
+  // 2^24 + 1 is the first integer a float cannot hold.
+  PointCloud cloud;
+  cloud.points = {{0, 0, 0}, {1, 1, 1}};
+  cloud.scalars = {{"score", {0.5f, 0.25f}}};
+  cloud.index_fields = {{"source_index", {16777217u, 4000000000u}}};
+  const std::string path = (directory_ / "indices.ply").string();
+  WritePointCloud(path, cloud, false);
+  const PointCloud read = ReadPointCloud(path);
+  ASSERT_NE(read.FindIndexField("source_index"), nullptr);
+  EXPECT_EQ(*read.FindIndexField("source_index"), cloud.index_fields[0].second);
+  ASSERT_NE(read.FindScalar("score"), nullptr);
+  EXPECT_EQ(*read.FindScalar("score"), cloud.scalars[0].second);
+  EXPECT_EQ(read.FindScalar("source_index"), nullptr);
 }
 
 TEST_F(PointCloudIoTest, BadFilesGiveOneLineErrorsNamingTheProblem) {

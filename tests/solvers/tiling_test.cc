@@ -104,7 +104,7 @@ TEST(DenoiseTile, OneTileIsTheUntiledRun) {
   ASSERT_EQ(tiles.size(), 1u);
   const TileOutcome tile = DenoiseTile(noisy.points, tiles[0], options, TilingOptions{3000});
   const DenoiseResult whole = DenoisePointSet(noisy.points, options);
-  EXPECT_EQ(tile.halo_points, 0);
+  EXPECT_TRUE(tile.halo.empty());
   for (size_t i = 0; i < noisy.points.size(); ++i) {
     ASSERT_EQ(tile.projected[i], whole.projected[i]) << i;
     ASSERT_EQ(tile.kept[i], whole.kept[i]) << i;
@@ -122,12 +122,9 @@ TEST(DenoiseTile, EightTilesGiveTheUntiledResultAlsoAtTheSeams) {
   // A point within one halo of a tile border is in another tile's halo.
   std::vector<uint8_t> at_seam(noisy.points.size(), 0);
   for (const std::vector<int>& own : tiles) {
-    PlaceTile(DenoiseTile(noisy.points, own, options, tiling), &tiled);
-    energy::PointList own_points;
-    for (int i : own) own_points.push_back(noisy.points[i]);
-    for (int i : HaloOf(noisy.points, own, HaloWidth(own_points, options, tiling.halo_radii))) {
-      at_seam[i] = 1;
-    }
+    const TileOutcome tile = DenoiseTile(noisy.points, own, options, tiling);
+    PlaceTile(tile, &tiled);
+    for (int i : tile.halo) at_seam[i] = 1;
   }
   const DenoiseResult whole = DenoisePointSet(noisy.points, options);
   double tiled_sum = 0.0, whole_sum = 0.0, tiled_seam = 0.0, whole_seam = 0.0;
