@@ -25,7 +25,7 @@ run() {
     { cat "$tmp/$name.err" >&2; exit 1; }
   cat "$tmp/$name.time"
 }
-mean() { "$lpd" metrics "$1" --ground_truth=shape:cad_part | awk '/^mean_distance/ {print $4}'; }
+mean() { "$lpd" metrics "$1" --ground_truth=shape:cad_part | awk '/^mean_distance/ {print $3}'; }
 
 read -r whole_s whole_kb < <(run whole "$lpd" denoise "$tmp/in.ply" -o "$tmp/whole.ply" --quiet)
 read -r tiled_s tiled_kb < <(run tiled ${MPIRUN:-} "$lpd" denoise "$tmp/in.ply" -o "$tmp/tiled.ply" \

@@ -21,8 +21,9 @@ bool NeighborhoodSizeOptions::IsValid(std::string* error) const {
     out << "probe_k must be >= 4, got " << probe_k;
   } else if (!(radius_in_sigmas > 0.0) || !std::isfinite(radius_in_sigmas)) {
     out << "k_radius_sigmas must be finite and > 0, got " << radius_in_sigmas;
-  } else if (!(max_problem_size >= 1e3) || !std::isfinite(max_problem_size)) {
-    out << "max_problem_size must be finite and >= 1000, got " << max_problem_size;
+  } else if (!(max_problem_size >= kSmallestProblemSize) || !std::isfinite(max_problem_size)) {
+    out << "max_problem_size must be finite and >= " << kSmallestProblemSize << ", got "
+        << max_problem_size;
   } else if (min_k < 3) {
     out << "min_k must be >= 3, got " << min_k;
   } else if (max_k < min_k) {

@@ -34,6 +34,7 @@ struct NeighborhoodSizeOptions {
   // The largest problem solved, in neighbour entries n k; past it a subsample is solved
   // (thinning.h). 1e7 is about 0.6 GB and 20 s on 2 cores.
   double max_problem_size = 1e7;
+  static constexpr double kSmallestProblemSize = 1e3;  // the least max_problem_size allowed
 
   bool IsValid(std::string* error) const;
 };

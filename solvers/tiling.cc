@@ -16,34 +16,35 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-energy::PointList Gather(const energy::PointList& points, const std::vector<int>& indices) {
-  energy::PointList gathered;
-  gathered.reserve(indices.size());
-  for (int i : indices) gathered.push_back(points[i]);
-  return gathered;
-}
-
 // Splits points[first, last) of `indices` at the median of the box's longest axis until each
-// part holds at most `tile_points`.
-void Split(const energy::PointList& points, std::vector<int>::iterator first,
-           std::vector<int>::iterator last, int tile_points,
-           std::vector<std::vector<int>>* tiles) {
+// part holds at most `capacity`; returns the node's index in tree->nodes.
+int Split(const energy::PointList& points, std::vector<int>::iterator first,
+          std::vector<int>::iterator last, int capacity, TileTree* tree) {
+  const int node = static_cast<int>(tree->nodes.size());
+  tree->nodes.emplace_back();
   const long count = last - first;
-  if (count <= tile_points) {
-    std::vector<int> tile(first, last);
-    std::sort(tile.begin(), tile.end());
-    tiles->push_back(std::move(tile));
-    return;
+  if (count <= capacity) {
+    tree->nodes[node].tile = tree->num_tiles++;
+    return node;
   }
   Eigen::AlignedBox3d box;
   for (auto it = first; it != last; ++it) box.extend(points[*it]);
   int axis = 0;
   box.sizes().maxCoeff(&axis);
   const auto middle = first + count / 2;
-  std::nth_element(first, middle, last,
-                   [&](int a, int b) { return points[a][axis] < points[b][axis]; });
-  Split(points, first, middle, tile_points, tiles);
-  Split(points, middle, last, tile_points, tiles);
+  auto below = [&](int a, int b) { return points[a][axis] < points[b][axis]; };
+  std::nth_element(first, middle, last, below);
+  // The low side ends at the largest coordinate before the median (points equal to it go
+  // low, as Locate sends them).
+  const double value = points[*std::max_element(first, middle, below)][axis];
+  const int low = Split(points, first, middle, capacity, tree);
+  const int high = Split(points, middle, last, capacity, tree);
+  TileTree::Node& split = tree->nodes[node];
+  split.axis = axis;
+  split.value = value;
+  split.low = low;
+  split.high = high;
+  return node;
 }
 
 }  // namespace
@@ -61,12 +62,50 @@ bool TilingOptions::IsValid(std::string* error) const {
   return false;
 }
 
-std::vector<std::vector<int>> PlanTiles(const energy::PointList& points, int tile_points) {
-  if (tile_points < 1) throw std::invalid_argument("tile_points must be >= 1");
+int TileTree::Locate(const energy::Point3& p) const {
+  int node = 0;
+  while (nodes[node].axis >= 0) {
+    node = p[nodes[node].axis] <= nodes[node].value ? nodes[node].low : nodes[node].high;
+  }
+  return nodes[node].tile;
+}
+
+std::vector<double> TileTree::Flatten() const {
+  std::vector<double> values = {static_cast<double>(num_tiles)};
+  for (const Node& node : nodes) {
+    values.insert(values.end(), {static_cast<double>(node.axis), node.value,
+                                 static_cast<double>(node.low), static_cast<double>(node.high),
+                                 static_cast<double>(node.tile)});
+  }
+  return values;
+}
+
+TileTree TileTree::Unflatten(const std::vector<double>& values) {
+  TileTree tree;
+  tree.num_tiles = static_cast<int>(values.at(0));
+  for (size_t at = 1; at + 5 <= values.size(); at += 5) {
+    tree.nodes.push_back({static_cast<int>(values[at]), values[at + 1],
+                          static_cast<int>(values[at + 2]), static_cast<int>(values[at + 3]),
+                          static_cast<int>(values[at + 4])});
+  }
+  return tree;
+}
+
+TileTree PlanTileTree(const energy::PointList& points, int capacity) {
+  if (capacity < 1) throw std::invalid_argument("tile_points must be >= 1");
   std::vector<int> indices(points.size());
   std::iota(indices.begin(), indices.end(), 0);
-  std::vector<std::vector<int>> tiles;
-  if (!points.empty()) Split(points, indices.begin(), indices.end(), tile_points, &tiles);
+  TileTree tree;
+  Split(points, indices.begin(), indices.end(), capacity, &tree);
+  return tree;
+}
+
+std::vector<std::vector<int>> PlanTiles(const energy::PointList& points, int tile_points) {
+  const TileTree tree = PlanTileTree(points, tile_points);
+  std::vector<std::vector<int>> tiles(tree.num_tiles);
+  for (size_t i = 0; i < points.size(); ++i) {
+    tiles[tree.Locate(points[i])].push_back(static_cast<int>(i));
+  }
   return tiles;
 }
 
@@ -84,7 +123,7 @@ std::vector<int> HaloOf(const energy::PointList& points, const std::vector<int>&
   for (int i : own) is_own[i] = 1;
   std::vector<int> halo;
   for (size_t i = 0; i < points.size(); ++i) {
-    if (!is_own[i] && box.exteriorDistance(points[i]) <= width) halo.push_back(static_cast<int>(i));
+    if (!is_own[i] && InHalo(box, width, points[i])) halo.push_back(static_cast<int>(i));
   }
   return halo;
 }
@@ -103,19 +142,14 @@ double HaloWidth(const energy::PointList& own_points, const DenoiseOptions& opti
   return halo_radii * size.spacing * diagonal * std::sqrt(size.k / kPi);
 }
 
-TileOutcome DenoiseTile(const energy::PointList& points, const std::vector<int>& own,
-                        const DenoiseOptions& options, const TilingOptions& tiling) {
+TileOutcome DenoiseTile(const energy::PointList& own_points,
+                        const energy::PointList& halo_points, const DenoiseOptions& options) {
   const Clock::time_point start = Clock::now();
-  const energy::PointList own_points = Gather(points, own);
-  const std::vector<int> halo =
-      HaloOf(points, own, HaloWidth(own_points, options, tiling.halo_radii));
-  energy::PointList tile_points = own_points;
-  for (int i : halo) tile_points.push_back(points[i]);
-  const DenoiseResult result = DenoisePointSet(tile_points, options);
-
+  energy::PointList points = own_points;
+  points.insert(points.end(), halo_points.begin(), halo_points.end());
+  const DenoiseResult result = DenoisePointSet(points, options);
   TileOutcome tile;
-  tile.own = own;
-  const size_t n = own.size();
+  const size_t n = own_points.size();
   tile.projected.assign(result.projected.begin(), result.projected.begin() + n);
   tile.normals.assign(result.normals.begin(), result.normals.begin() + n);
   const PointIndicators& all = result.indicators;
@@ -124,39 +158,12 @@ TileOutcome DenoiseTile(const energy::PointList& points, const std::vector<int>&
   tile.indicators.is_outlier.assign(all.is_outlier.begin(), all.is_outlier.begin() + n);
   tile.indicators.is_feature.assign(all.is_feature.begin(), all.is_feature.begin() + n);
   tile.kept.assign(result.kept.begin(), result.kept.begin() + n);
-  tile.halo = halo;
   tile.k = result.neighborhood.k;
   tile.solved_points = result.solved_points;
   tile.iterations = result.summary.num_iterations;
   tile.converged = result.summary.termination == TerminationType::kConvergence;
   tile.seconds = SecondsSince(start);
   return tile;
-}
-
-void ResizeForTiles(size_t num_points, DenoiseResult* total) {
-  total->projected.resize(num_points);
-  total->normals.resize(num_points);
-  total->indicators.outlier_score.resize(num_points);
-  total->indicators.feature_score.resize(num_points);
-  total->indicators.is_outlier.resize(num_points);
-  total->indicators.is_feature.resize(num_points);
-  total->kept.resize(num_points);
-}
-
-void PlaceTile(const TileOutcome& tile, DenoiseResult* total) {
-  for (size_t a = 0; a < tile.own.size(); ++a) {
-    const int i = tile.own[a];
-    total->projected[i] = tile.projected[a];
-    total->normals[i] = tile.normals[a];
-    total->indicators.outlier_score[i] = tile.indicators.outlier_score[a];
-    total->indicators.feature_score[i] = tile.indicators.feature_score[a];
-    total->indicators.is_outlier[i] = tile.indicators.is_outlier[a];
-    total->indicators.is_feature[i] = tile.indicators.is_feature[a];
-    total->kept[i] = tile.kept[a];
-    total->num_outliers += tile.indicators.is_outlier[a];
-    total->num_removed += !tile.kept[a];
-    total->num_features += tile.indicators.is_feature[a];
-  }
 }
 
 }  // namespace lpd::solvers

@@ -10,7 +10,8 @@
 //   w = halo_radii r_k,   r_k = spacing sqrt(k / pi)
 // with k and the spacing those the tile's own points get (on the subsample the tile would
 // solve, thinning.h): k points fill a disc of radius r_k at that spacing. Every tile runs
-// the whole default pipeline (its own k, weights and outlier passes) on its points and halo.
+// the whole default pipeline (its own k, weights and outlier passes) on its points and halo;
+// the command line gives each tile its share of the problem-size budget (tiled_denoise.h).
 #ifndef LPD_SOLVERS_TILING_H_
 #define LPD_SOLVERS_TILING_H_
 
@@ -32,13 +33,37 @@ struct TilingOptions {
   bool IsValid(std::string* error) const;
 };
 
-// The own points of each tile (input indices, increasing), from a k-d split at the median of
-// the longest axis until every tile holds at most tile_points. Every point is in exactly one
-// tile. Throws std::invalid_argument if tile_points < 1.
+// A k-d split of space into tiles: each inner node sends a point to its low side when its
+// coordinate on `axis` is at most `value`; each leaf is a tile.
+struct TileTree {
+  struct Node {
+    int axis = -1;        // -1: a leaf
+    double value = 0.0;
+    int low = -1, high = -1;
+    int tile = -1;        // leaves: the tile number (from 0)
+  };
+  std::vector<Node> nodes;  // nodes[0] is the root
+  int num_tiles = 0;
+
+  int Locate(const energy::Point3& p) const;  // the tile of p
+  // As a flat list of numbers (to send between processes) and back.
+  std::vector<double> Flatten() const;
+  static TileTree Unflatten(const std::vector<double>& values);
+};
+
+// Splits at the median of the longest axis of `points` (a cloud or a uniform sample of one)
+// until every leaf holds at most `capacity` of them. Throws std::invalid_argument if
+// capacity < 1.
+TileTree PlanTileTree(const energy::PointList& points, int capacity);
+
+// The own points of each tile of PlanTileTree(points, tile_points) (input indices,
+// increasing): every point is in exactly one tile.
 std::vector<std::vector<int>> PlanTiles(const energy::PointList& points, int tile_points);
 
-// The axis-aligned bounding box of points[indices].
-Eigen::AlignedBox3d BoundingBoxOf(const energy::PointList& points, const std::vector<int>& indices);
+// Whether p is within `width` of `box` (the halo test).
+inline bool InHalo(const Eigen::AlignedBox3d& box, double width, const energy::Point3& p) {
+  return box.exteriorDistance(p) <= width;
+}
 
 // The points (input indices, increasing) not in `own` within `width` of its bounding box.
 std::vector<int> HaloOf(const energy::PointList& points, const std::vector<int>& own,
@@ -49,14 +74,12 @@ std::vector<int> HaloOf(const energy::PointList& points, const std::vector<int>&
 double HaloWidth(const energy::PointList& own_points, const DenoiseOptions& options,
                  double halo_radii);
 
-// One tile's result, for its own points only (in the order of `own`).
+// One tile's result, for its own points only (in their order).
 struct TileOutcome {
-  std::vector<int> own;
   energy::PointList projected;
   energy::PointList normals;
   PointIndicators indicators;
   std::vector<uint8_t> kept;
-  std::vector<int> halo;          // input indices of the halo points
   int k = 0;
   int solved_points = 0;          // of the tile and its halo (thinning.h)
   int iterations = 0;
@@ -64,14 +87,10 @@ struct TileOutcome {
   double seconds = 0.0;
 };
 
-// Denoises `own` (input indices) with its halo. `options.settings.num_threads` threads.
-TileOutcome DenoiseTile(const energy::PointList& points, const std::vector<int>& own,
-                        const DenoiseOptions& options, const TilingOptions& tiling);
-
-// Copies a tile's own results into `total` (one entry per input point, sized by the caller
-// with ResizeForTiles).
-void PlaceTile(const TileOutcome& tile, DenoiseResult* total);
-void ResizeForTiles(size_t num_points, DenoiseResult* total);
+// Denoises a tile's own points together with its halo points, with
+// `options.settings.num_threads` threads.
+TileOutcome DenoiseTile(const energy::PointList& own_points,
+                        const energy::PointList& halo_points, const DenoiseOptions& options);
 
 }  // namespace lpd::solvers
 

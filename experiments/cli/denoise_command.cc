@@ -242,35 +242,25 @@ void PrintBuiltInDistance(const DefaultInput& built_in, const energy::PointList&
       after <= before ? before / after : after / before, after <= before ? "lower" : "higher");
 }
 
-// The tiled run (tiled_denoise.h): every rank reads the input, rank 0 writes the output.
+// The tiled run (tiled_denoise.h): rank 0 reads INPUT and writes the output.
 int RunTiled(const std::vector<std::string>& arguments, const solvers::DenoiseOptions& options,
              const solvers::TilingOptions& tiling) {
-  const DenoiseInput input = LoadInput(arguments);
-  TiledRun run = DenoiseInTiles(input.points, options, tiling, FlagGiven("threads"), FLAGS_quiet);
+  DenoiseInput built_in;
+  if (arguments.empty()) built_in = LoadInput(arguments);
+  const TiledRun run =
+      DenoiseInTiles(arguments.empty() ? "" : arguments[0], built_in.points, options, tiling,
+                     FLAGS_output, FLAGS_overwrite, FlagGiven("threads"), FLAGS_quiet);
   if (!run.is_root) return 0;
-  ThrowIfInterrupted();
-  const solvers::DenoiseResult& result = run.result;
-  PointCloud cloud = MakeOutputCloud(result);
-  std::vector<uint32_t> tile;
-  std::vector<float> seam;
-  for (size_t i = 0; i < result.kept.size(); ++i) {
-    if (!result.kept[i]) continue;
-    tile.push_back(static_cast<uint32_t>(run.tile_of[i]));
-    seam.push_back(run.at_seam[i]);
-  }
-  cloud.index_fields.emplace_back("tile", std::move(tile));
-  cloud.scalars.emplace_back("seam", std::move(seam));
-  if (!FLAGS_output.empty()) WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
   std::printf(
-      "points in %zu, out %zu, outliers flagged %d, removed %d, feature points %d, time %.2f s\n",
-      result.projected.size(), cloud.points.size(), result.num_outliers, result.num_removed,
-      result.num_features, run.seconds);
+      "points in %zu, out %ld, outliers flagged %ld, removed %ld, feature points %ld, "
+      "time %.2f s\n",
+      run.num_points, run.kept, run.outliers, static_cast<long>(run.num_points) - run.kept,
+      run.features, run.seconds);
   std::printf("tiles %d on %d process%s x %d thread%s, halo points %ld, k %d-%d, at most %d "
               "iterations, %d of %d tiles converged\n",
               run.tiles, run.ranks, run.ranks > 1 ? "es" : "", run.threads_per_rank,
               run.threads_per_rank > 1 ? "s" : "", run.halo_points, run.min_k, run.max_k,
               run.max_iterations, run.converged_tiles, run.tiles);
-  if (input.is_built_in) PrintBuiltInDistance(input.built_in, cloud.points);
   if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());
   return 0;
 }

@@ -1,10 +1,10 @@
 // lpd: the processes that share the tiles of a tiled run (solvers/tiling.h).
 //
-// Started by `mpirun -np R` (Open MPI), the R ranks of MPI_COMM_WORLD: every rank denoises
-// its tiles and sends each tile's outcome to rank 0 as soon as it is done, without waiting
-// for rank 0 to take it; rank 0 assembles and writes the output. Started without mpirun, this
-// process alone (no MPI call is made). Built without MPI (no libopenmpi-dev at configure
-// time), always this process alone.
+// Started by `mpirun -np R` (Open MPI), the R ranks of MPI_COMM_WORLD: rank 0 broadcasts the
+// plan, every rank denoises its tiles and sends each tile's summary to rank 0 as soon as it is
+// done, without waiting for rank 0 to take it. Messages are arrays of doubles. Started
+// without mpirun, this process alone (no MPI call is made). Built without MPI (no
+// libopenmpi-dev at configure time), always this process alone.
 #ifndef LPD_EXPERIMENTS_CLI_TILE_WORLD_H_
 #define LPD_EXPERIMENTS_CLI_TILE_WORLD_H_
 
@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "solvers/tiling.h"
 
 namespace lpd::experiments {
 
@@ -28,18 +27,25 @@ class TileWorld {
   int size() const { return size_; }
   bool is_root() const { return rank_ == 0; }
 
-  // A rank other than 0: hands `tile` (tile number `index`) to rank 0 without blocking.
-  void Send(int index, const solvers::TileOutcome& tile);
-  // Rank 0: the next outcome another rank sent, if one has arrived (or, with `wait`, once
-  // one arrives). False when none is there (never with `wait`).
-  bool Receive(bool wait, int* index, solvers::TileOutcome* tile);
+  // Rank 0's `values` to every rank (resized on the others).
+  void Broadcast(std::vector<double>* values);
+  // A rank other than 0: hands `message` to rank 0 without blocking.
+  void Send(std::vector<double> message);
+  // Rank 0: the next message another rank sent, if one has arrived (or, with `wait`, once
+  // one arrives). False when none is there (never with `wait`), and in a world of one.
+  // Throws RankFailed when the message is another rank's Fail.
+  bool Receive(bool wait, std::vector<double>* message);
+  struct RankFailed {};
 
-  // Ends every rank with exit code 1 (MPI_Abort) after printing `message` on stderr: from
-  // this rank with Fail (a failure of this rank's own), from rank 0 only with FailEverywhere
-  // (a failure every rank meets alike). In a world of one both throw
-  // std::runtime_error(message) instead.
+  // Ends every rank with exit code 1 after printing `message` on stderr. Fail is a failure of
+  // this rank's own: on rank 0 it aborts at once (MPI_Abort); another rank tells rank 0 and
+  // waits, so that rank 0 can clean up (its next Receive throws RankFailed) before it calls
+  // Abort. FailEverywhere is a failure every rank meets alike: rank 0 alone prints it. In a
+  // world of one, both throw std::runtime_error(message) instead.
   [[noreturn]] void Fail(const std::string& message);
   [[noreturn]] void FailEverywhere(const std::string& message);
+  // Rank 0, after RankFailed: ends every rank with exit code 1 (the failing rank has spoken).
+  [[noreturn]] void Abort();
 
  private:
   int rank_ = 0;

@@ -1,60 +1,61 @@
 #include "experiments/cli/tiled_denoise.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
 #include "energy/wall_clock.h"
+#include "experiments/cli/tile_store.h"
 #include "experiments/cli/tile_world.h"
 #include "experiments/io/interruption.h"
 
 namespace lpd::experiments {
 namespace {
 
+constexpr size_t kSampleSize = 1 << 20;  // points the tile tree is planned on
+
 // The fewest own points a tile may have: its neighbourhood-size probe, or the given k, needs
 // that many plus one.
 int FewestTilePoints(const solvers::DenoiseOptions& options) {
-  const int k = options.choose_k ? std::max(options.neighborhood.probe_k, options.neighborhood.min_k)
-                                 : options.problem.k;
+  const int k = options.choose_k
+                    ? std::max(options.neighborhood.probe_k, options.neighborhood.min_k)
+                    : options.problem.k;
   return k + 1;
 }
 
-// Rank 0's bookkeeping: the assembled result and the progress line.
-class Assembly {
+// Rank 0's tally of finished tiles and the progress line.
+class Progress {
  public:
-  Assembly(size_t num_points, int num_tiles, bool quiet, TiledRun* run)
+  Progress(size_t num_points, int num_tiles, bool quiet, TiledRun* run)
       : num_points_(num_points), num_tiles_(num_tiles), quiet_(quiet), run_(run),
-        start_(Clock::now()) {
-    solvers::ResizeForTiles(num_points, &run->result);
-    run->tile_of.resize(num_points);
-    run->at_seam.assign(num_points, 0);
-  }
+        start_(Clock::now()) {}
 
-  void Add(int index, const solvers::TileOutcome& tile) {
-    solvers::PlaceTile(tile, &run_->result);
-    for (int i : tile.own) run_->tile_of[i] = index;
-    for (int i : tile.halo) run_->at_seam[i] = 1;
-    ++done_;
-    points_done_ += tile.own.size();
+  void Add(const TileSummary& tile) {
+    summaries_.push_back(tile);
+    points_done_ += tile.own_points;
+    run_->kept += tile.kept;
+    run_->outliers += tile.outliers;
+    run_->features += tile.features;
     run_->converged_tiles += tile.converged;
-    run_->min_k = done_ == 1 ? tile.k : std::min(run_->min_k, tile.k);
+    run_->min_k = summaries_.size() == 1 ? tile.k : std::min(run_->min_k, tile.k);
     run_->max_k = std::max(run_->max_k, tile.k);
     run_->max_iterations = std::max(run_->max_iterations, tile.iterations);
-    run_->halo_points += static_cast<long>(tile.halo.size());
+    run_->halo_points += tile.halo_points;
     if (quiet_) return;
-    const double elapsed = SecondsSince(start_);
-    const double rate = points_done_ / std::max(elapsed, 1e-9);
+    const double rate = points_done_ / std::max(SecondsSince(start_), 1e-9);
     std::fprintf(stderr,
-                 "tile %d/%d done (tile %d: %zu points + %zu halo, k %d, %d iterations, %.1f s); "
-                 "%.3g points/s, about %.0f s left\n",
-                 done_, num_tiles_, index + 1, tile.own.size(), tile.halo.size(), tile.k,
-                 tile.iterations, tile.seconds, rate,
+                 "tile %zu/%d done (tile %d: %ld points + %ld halo, k %d, %d iterations, "
+                 "%.1f s); %.3g points/s, about %.0f s left\n",
+                 summaries_.size(), num_tiles_, tile.tile + 1, tile.own_points,
+                 tile.halo_points, tile.k, tile.iterations, tile.seconds, rate,
                  (num_points_ - points_done_) / std::max(rate, 1e-9));
   }
 
-  int done() const { return done_; }
+  int done() const { return static_cast<int>(summaries_.size()); }
+  const std::vector<TileSummary>& summaries() const { return summaries_; }
 
  private:
   size_t num_points_;
@@ -62,32 +63,124 @@ class Assembly {
   bool quiet_;
   TiledRun* run_;
   Clock::time_point start_;
-  int done_ = 0;
   size_t points_done_ = 0;
+  std::vector<TileSummary> summaries_;
 };
+
+// The options of a problem of `points` of the run's `num_points`: its share of the run's
+// problem-size budget, so that past the budget a tile solves the same density of points at
+// the same k as the untiled run would (thinning.h); the smallest budget allowed at least.
+solvers::DenoiseOptions ShareOfBudget(solvers::DenoiseOptions options, size_t points,
+                                      size_t num_points) {
+  double& budget = options.neighborhood.max_problem_size;
+  budget = std::max(solvers::NeighborhoodSizeOptions::kSmallestProblemSize,
+                    budget * static_cast<double>(points) / static_cast<double>(num_points));
+  return options;
+}
+
+// Tile `t`: its own points and halo from the store, denoised; the results go to the store.
+TileSummary RunTile(const TileStore& store, const solvers::TileTree& tree, int t,
+                    size_t num_points, const solvers::DenoiseOptions& options,
+                    const solvers::TilingOptions& tiling) {
+  std::vector<uint32_t> own;
+  energy::PointList own_points;
+  store.Scan([&](uint32_t index, const energy::Point3& p) {
+    if (tree.Locate(p) != t) return;
+    own.push_back(index);
+    own_points.push_back(p);
+  });
+  if (static_cast<int>(own.size()) < FewestTilePoints(options)) {
+    throw std::invalid_argument("it holds " + std::to_string(own.size()) + " points, fewer than the " +
+                                std::to_string(FewestTilePoints(options)) +
+                                " a neighbourhood needs (raise --tile_points)");
+  }
+  TileSummary summary;
+  summary.tile = t;
+  for (const energy::Point3& p : own_points) summary.box.extend(p);
+  summary.halo_width = solvers::HaloWidth(
+      own_points, ShareOfBudget(options, own_points.size(), num_points), tiling.halo_radii);
+  energy::PointList halo_points;
+  store.Scan([&](uint32_t, const energy::Point3& p) {
+    if (tree.Locate(p) != t && solvers::InHalo(summary.box, summary.halo_width, p)) {
+      halo_points.push_back(p);
+    }
+  });
+  const solvers::TileOutcome outcome = solvers::DenoiseTile(
+      own_points, halo_points,
+      ShareOfBudget(options, own_points.size() + halo_points.size(), num_points));
+  store.WriteTile(t, own, outcome);
+  summary.own_points = static_cast<long>(own.size());
+  summary.halo_points = static_cast<long>(halo_points.size());
+  for (size_t a = 0; a < own.size(); ++a) {
+    summary.kept += outcome.kept[a];
+    summary.outliers += outcome.indicators.is_outlier[a];
+    summary.features += outcome.indicators.is_feature[a];
+  }
+  summary.k = outcome.k;
+  summary.solved_points = outcome.solved_points;
+  summary.iterations = outcome.iterations;
+  summary.converged = outcome.converged;
+  summary.seconds = outcome.seconds;
+  return summary;
+}
+
+std::string Plural(int count, const std::string& noun) {
+  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
 
 }  // namespace
 
-TiledRun DenoiseInTiles(const energy::PointList& points, solvers::DenoiseOptions options,
-                        const solvers::TilingOptions& tiling, bool threads_given, bool quiet) {
+TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& points,
+                        solvers::DenoiseOptions options, const solvers::TilingOptions& tiling,
+                        const std::string& output, bool overwrite, bool threads_given,
+                        bool quiet) {
+  if (tiling.tile_points < FewestTilePoints(options)) {
+    throw std::invalid_argument("--tile_points=" + std::to_string(tiling.tile_points) +
+                                " is fewer than the " +
+                                std::to_string(FewestTilePoints(options)) +
+                                " points a neighbourhood needs");
+  }
   const Clock::time_point start = Clock::now();
   TileWorld world;
   TiledRun run;
   run.is_root = world.is_root();
   run.ranks = world.size();
-  const std::vector<std::vector<int>> plan = solvers::PlanTiles(points, tiling.tile_points);
-  run.tiles = static_cast<int>(plan.size());
-  size_t smallest = points.size();
-  for (const std::vector<int>& tile : plan) smallest = std::min(smallest, tile.size());
-  if (static_cast<int>(smallest) < FewestTilePoints(options)) {
-    world.FailEverywhere("--tile_points=" + std::to_string(tiling.tile_points) +
-                         " gives a tile of " + std::to_string(smallest) +
-                         " points, fewer than the " + std::to_string(FewestTilePoints(options)) +
-                         " a neighbourhood needs");
+
+  // Rank 0 reads the input into the store and plans; the plan goes to every rank.
+  std::unique_ptr<TileStore> store;
+  std::vector<double> plan;  // directory name, n, then the flattened tile tree
+  if (world.is_root()) {
+    try {
+      store = std::make_unique<TileStore>(TileStore::CreateDirectory(), /*owner=*/true);
+      energy::PointList sample;
+      run.num_points = input.empty() ? store->Spool(points, kSampleSize, &sample)
+                                     : store->Spool(input, kSampleSize, &sample);
+      const int capacity = std::max<int>(
+          1, static_cast<int>(std::lround(static_cast<double>(tiling.tile_points) *
+                                          sample.size() / run.num_points)));
+      const std::vector<double> tree = solvers::PlanTileTree(sample, capacity).Flatten();
+      plan.assign(store->directory().begin(), store->directory().end());
+      plan.insert(plan.begin(), static_cast<double>(plan.size()));
+      plan.push_back(static_cast<double>(run.num_points));
+      plan.insert(plan.end(), tree.begin(), tree.end());
+    } catch (const std::exception& error) {
+      store.reset();
+      world.Fail(error.what());
+    }
   }
+  world.Broadcast(&plan);
+  const size_t name_length = static_cast<size_t>(plan[0]);
+  if (!world.is_root()) {
+    store = std::make_unique<TileStore>(std::string(plan.begin() + 1, plan.begin() + 1 + name_length),
+                                        /*owner=*/false);
+  }
+  run.num_points = static_cast<size_t>(plan[1 + name_length]);
+  const solvers::TileTree tree = solvers::TileTree::Unflatten(
+      std::vector<double>(plan.begin() + 2 + name_length, plan.end()));
+  run.tiles = tree.num_tiles;
   if (world.size() > run.tiles) {
-    const std::string tiles = std::to_string(run.tiles) + (run.tiles == 1 ? " tile" : " tiles");
-    world.FailEverywhere(std::to_string(world.size()) + " ranks for " + tiles +
+    if (world.is_root()) store.reset();
+    world.FailEverywhere(Plural(world.size(), "rank") + " for " + Plural(run.tiles, "tile") +
                          ": start at most as many ranks, or lower --tile_points");
   }
   if (!threads_given && world.size() > 1) {
@@ -96,39 +189,49 @@ TiledRun DenoiseInTiles(const energy::PointList& points, solvers::DenoiseOptions
   }
   run.threads_per_rank = options.settings.num_threads;
   if (world.is_root() && !quiet) {
-    std::fprintf(stderr, "%d tiles of at most %d points on %d process%s x %d thread%s\n",
-                 run.tiles, tiling.tile_points, world.size(), world.size() > 1 ? "es" : "",
-                 run.threads_per_rank, run.threads_per_rank > 1 ? "s" : "");
+    std::fprintf(stderr, "%zu points in %s of about %d points on %s x %s\n", run.num_points,
+                 Plural(run.tiles, "tile").c_str(), tiling.tile_points,
+                 Plural(world.size(), "process").c_str(),
+                 Plural(run.threads_per_rank, "thread").c_str());
   }
 
-  std::unique_ptr<Assembly> assembly;
-  if (world.is_root()) assembly = std::make_unique<Assembly>(points.size(), run.tiles, quiet, &run);
+  Progress progress(run.num_points, run.tiles, quiet, &run);
+  std::vector<double> message;
   for (int t = world.rank(); t < run.tiles; t += world.size()) {
-    solvers::TileOutcome outcome;
+    TileSummary summary;
     try {
       ThrowIfInterrupted();
-      outcome = solvers::DenoiseTile(points, plan[t], options, tiling);
+      summary = RunTile(*store, tree, t, run.num_points, options, tiling);
     } catch (const std::exception& error) {
-      world.Fail("tile " + std::to_string(t + 1) + " of " + std::to_string(run.tiles) + " (" +
-                 std::to_string(plan[t].size()) + " points, rank " +
-                 std::to_string(world.rank()) + ") failed: " + error.what());
+      if (world.is_root()) store.reset();
+      world.Fail("tile " + std::to_string(t + 1) + " of " + std::to_string(run.tiles) +
+                 " (rank " + std::to_string(world.rank()) + ") failed: " + error.what());
     }
     if (!world.is_root()) {
-      world.Send(t, outcome);
+      world.Send(summary.Flatten());
       continue;
     }
-    assembly->Add(t, outcome);
-    int index = 0;
-    solvers::TileOutcome other;
-    while (world.Receive(/*wait=*/false, &index, &other)) assembly->Add(index, other);
-  }
-  if (world.is_root()) {
-    int index = 0;
-    solvers::TileOutcome other;
-    while (assembly->done() < run.tiles && world.Receive(/*wait=*/true, &index, &other)) {
-      assembly->Add(index, other);
+    progress.Add(summary);
+    try {
+      while (world.Receive(/*wait=*/false, &message)) {
+        progress.Add(TileSummary::Unflatten(message));
+      }
+    } catch (const TileWorld::RankFailed&) {
+      store.reset();
+      world.Abort();
     }
   }
+  if (!world.is_root()) return run;
+  try {
+    while (progress.done() < run.tiles && world.Receive(/*wait=*/true, &message)) {
+      progress.Add(TileSummary::Unflatten(message));
+    }
+  } catch (const TileWorld::RankFailed&) {
+    store.reset();
+    world.Abort();
+  }
+  ThrowIfInterrupted();
+  if (!output.empty()) store->Merge(tree, progress.summaries(), output, overwrite);
   run.seconds = SecondsSince(start);
   return run;
 }

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -100,29 +102,37 @@ bool IsBlankOrComment(const std::string& line) {
   return true;
 }
 
-// Columns 4-6 are read as normals when every line has them and they are unit vectors (as
-// "x y z nx ny nz" exports are); colours or other extra columns are ignored.
-PointCloud ReadXyz(const std::string& path, std::istream& in) {
-  PointCloud cloud;
-  bool normals_on_every_line = true;
+// Calls visit(p, rest) for every point line of an XYZ file, `rest` pointing past x y z.
+template <class Visit>
+void VisitXyz(const std::string& path, std::istream& in, Visit visit) {
   std::string line;
   long number = 0;
   while (ReadLine(path, in, &line, number + 1)) {
     ++number;
     if (IsBlankOrComment(line)) continue;
-    Point3 p, n;
+    Point3 p;
     const char* rest = nullptr;
     if (!ParseThreeNumbers(line.c_str(), &p, &rest)) {
       Fail(path, number, "expected three numbers 'x y z', got '" + Excerpt(line) + "'");
     }
     CheckFinite(path, number, p);
-    cloud.points.push_back(p);
-    if (normals_on_every_line) {
-      normals_on_every_line = ParseThreeNumbers(rest, &n) && n.allFinite() &&
-                              std::abs(n.norm() - 1.0) < 0.01;
-      if (normals_on_every_line) cloud.normals.push_back(n);
-    }
+    visit(p, rest);
   }
+}
+
+// Columns 4-6 are read as normals when every line has them and they are unit vectors (as
+// "x y z nx ny nz" exports are); colours or other extra columns are ignored.
+PointCloud ReadXyz(const std::string& path, std::istream& in) {
+  PointCloud cloud;
+  bool normals_on_every_line = true;
+  VisitXyz(path, in, [&](const Point3& p, const char* rest) {
+    cloud.points.push_back(p);
+    if (!normals_on_every_line) return;
+    Point3 n;
+    normals_on_every_line =
+        ParseThreeNumbers(rest, &n) && n.allFinite() && std::abs(n.norm() - 1.0) < 0.01;
+    if (normals_on_every_line) cloud.normals.push_back(n);
+  });
   if (!normals_on_every_line) cloud.normals.clear();
   return cloud;
 }
@@ -437,10 +447,12 @@ void ReadPlyItem(const std::string& path, std::istream& in, PlyFormat format,
 
 // The vertex element as a PointCloud: x, y, z; nx, ny, nz as normals when all three exist;
 // every other scalar property as a named scalar. Elements before it are read and skipped.
-PointCloud ReadPly(const std::string& path, std::istream& in) {
+// Calls start(layout) once, then visit(values) for every vertex (its property values, in
+// the header's order), after checking its coordinates are finite.
+template <class Start, class Visit>
+void VisitPly(const std::string& path, std::istream& in, Start start, Visit visit) {
   const PlyHeader header = ReadPlyHeader(path, in);
   CheckPlyCountsFitBody(path, header.format, header.elements, &in);
-  PointCloud cloud;
   long number = header.lines;
   for (const PlyElement& element : header.elements) {
     std::vector<double> values(element.properties.size());
@@ -452,74 +464,46 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
       continue;
     }
     const VertexLayout layout = LayoutOf(path, element);
-    for (size_t a : layout.scalars) cloud.scalars.push_back({element.properties[a].name, {}});
-    for (size_t a : layout.index_fields) {
-      cloud.index_fields.push_back({element.properties[a].name, {}});
-    }
-    cloud.points.reserve(element.count);
+    start(element, layout);
     for (long item = 0; item < element.count; ++item) {
       ReadPlyItem(path, in, header.format, element, item, &number, &values);
-      const Point3 p(values[layout.xyz[0]], values[layout.xyz[1]], values[layout.xyz[2]]);
-      if (!p.allFinite()) {
+      if (!Point3(values[layout.xyz[0]], values[layout.xyz[1]], values[layout.xyz[2]])
+               .allFinite()) {
         Fail(path, header.format == PlyFormat::kAscii ? number : 0,
              "vertex " + std::to_string(item) + " has a non-finite coordinate");
       }
-      cloud.points.push_back(p);
-      if (layout.has_normals()) {
-        cloud.normals.emplace_back(values[layout.normal[0]], values[layout.normal[1]],
-                                   values[layout.normal[2]]);
-      }
-      for (size_t s = 0; s < layout.scalars.size(); ++s) {
-        cloud.scalars[s].second.push_back(static_cast<float>(values[layout.scalars[s]]));
-      }
-      for (size_t s = 0; s < layout.index_fields.size(); ++s) {
-        cloud.index_fields[s].second.push_back(
-            static_cast<uint32_t>(values[layout.index_fields[s]]));
-      }
+      visit(layout, values);
     }
-    break;
+    return;
   }
+}
+
+PointCloud ReadPly(const std::string& path, std::istream& in) {
+  PointCloud cloud;
+  auto start = [&](const PlyElement& vertex, const VertexLayout& layout) {
+    for (size_t a : layout.scalars) cloud.scalars.push_back({vertex.properties[a].name, {}});
+    for (size_t a : layout.index_fields) {
+      cloud.index_fields.push_back({vertex.properties[a].name, {}});
+    }
+    cloud.points.reserve(vertex.count);
+  };
+  auto visit = [&](const VertexLayout& layout, const std::vector<double>& values) {
+    cloud.points.emplace_back(values[layout.xyz[0]], values[layout.xyz[1]],
+                              values[layout.xyz[2]]);
+    if (layout.has_normals()) {
+      cloud.normals.emplace_back(values[layout.normal[0]], values[layout.normal[1]],
+                                 values[layout.normal[2]]);
+    }
+    for (size_t s = 0; s < layout.scalars.size(); ++s) {
+      cloud.scalars[s].second.push_back(static_cast<float>(values[layout.scalars[s]]));
+    }
+    for (size_t s = 0; s < layout.index_fields.size(); ++s) {
+      cloud.index_fields[s].second.push_back(
+          static_cast<uint32_t>(values[layout.index_fields[s]]));
+    }
+  };
+  VisitPly(path, in, start, visit);
   return cloud;
-}
-
-void WritePly(const std::string& path, const PointCloud& cloud, bool overwrite) {
-  AtomicOutputFile file(path, overwrite);
-  std::ofstream& out = file.stream();
-  const bool with_normals = !cloud.normals.empty();
-  out << "ply\nformat binary_little_endian 1.0\ncomment written by lpd\n";
-  for (const std::string& comment : cloud.comments) out << "comment " << comment << "\n";
-  out << "element vertex " << cloud.points.size() << "\n";
-  out << "property double x\nproperty double y\nproperty double z\n";
-  if (with_normals) out << "property float nx\nproperty float ny\nproperty float nz\n";
-  for (const auto& scalar : cloud.scalars) out << "property float " << scalar.first << "\n";
-  for (const auto& field : cloud.index_fields) out << "property uint " << field.first << "\n";
-  out << "end_header\n";
-  if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
-  std::vector<char> record;
-  for (size_t i = 0; i < cloud.points.size(); ++i) {
-    record.clear();
-    auto append = [&record](const void* data, size_t size) {
-      const char* bytes = static_cast<const char*>(data);
-      record.insert(record.end(), bytes, bytes + size);
-    };
-    append(cloud.points[i].data(), 3 * sizeof(double));
-    if (with_normals) {
-      const Eigen::Vector3f normal = cloud.normals[i].cast<float>();
-      append(normal.data(), 3 * sizeof(float));
-    }
-    for (const auto& scalar : cloud.scalars) append(&scalar.second[i], sizeof(float));
-    for (const auto& field : cloud.index_fields) append(&field.second[i], sizeof(uint32_t));
-    out.write(record.data(), static_cast<std::streamsize>(record.size()));
-  }
-  file.Commit();
-}
-
-void WriteXyz(const std::string& path, const PointCloud& cloud, bool overwrite) {
-  AtomicOutputFile file(path, overwrite);
-  std::ofstream& out = file.stream();
-  out.precision(17);
-  for (const Point3& p : cloud.points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  file.Commit();
 }
 
 }  // namespace
@@ -578,26 +562,124 @@ const std::vector<uint32_t>* PointCloud::FindIndexField(const std::string& name)
   return nullptr;
 }
 
+void ForEachPoint(const std::string& path, const std::function<void(const Point3&)>& visit) {
+  const std::string extension = FileExtension(path);
+  if (extension != "xyz" && extension != "txt" && extension != "pts" && extension != "ply") {
+    for (const Point3& p : ReadPoints(path)) visit(p);
+    return;
+  }
+  if (path.empty()) throw std::runtime_error("the input file name is empty");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) Fail(path, 0, "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+  SkipByteOrderMark(path, in);
+  long count = 0;
+  if (extension == "ply") {
+    VisitPly(path, in, [](const PlyElement&, const VertexLayout&) {},
+             [&](const VertexLayout& layout, const std::vector<double>& values) {
+               visit(Point3(values[layout.xyz[0]], values[layout.xyz[1]], values[layout.xyz[2]]));
+               ++count;
+             });
+  } else {
+    VisitXyz(path, in, [&](const Point3& p, const char*) {
+      visit(p);
+      ++count;
+    });
+  }
+  if (count == 0) Fail(path, 0, "no points");
+}
+
+PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
+                         bool with_normals, std::vector<std::string> scalars,
+                         std::vector<std::string> index_fields,
+                         const std::vector<std::string>& comments)
+    : file_(std::make_unique<AtomicOutputFile>(path, overwrite)),
+      ply_(FileExtension(path) == "ply"),
+      count_(count),
+      with_normals_(with_normals),
+      num_scalars_(scalars.size()),
+      num_index_fields_(index_fields.size()) {
+  const std::string extension = FileExtension(path);
+  if (!ply_ && extension != "xyz" && extension != "txt") {
+    throw std::runtime_error("cannot write '" + path +
+                             "': the output extension must be .ply, .xyz or .txt");
+  }
+  std::ofstream& out = file_->stream();
+  if (!ply_) {
+    out.precision(17);
+    return;
+  }
+  if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
+  out << "ply\nformat binary_little_endian 1.0\ncomment written by lpd\n";
+  for (const std::string& comment : comments) out << "comment " << comment << "\n";
+  out << "element vertex " << count << "\n";
+  out << "property double x\nproperty double y\nproperty double z\n";
+  if (with_normals) out << "property float nx\nproperty float ny\nproperty float nz\n";
+  for (const std::string& name : scalars) out << "property float " << name << "\n";
+  for (const std::string& name : index_fields) out << "property uint " << name << "\n";
+  out << "end_header\n";
+}
+
+PointWriter::~PointWriter() = default;
+
+void PointWriter::Write(const Point3& p, const Point3& normal, const float* scalars,
+                        const uint32_t* indices) {
+  ++written_;
+  std::ofstream& out = file_->stream();
+  if (!ply_) {
+    out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    return;
+  }
+  record_.clear();
+  auto append = [this](const void* data, size_t size) {
+    const char* bytes = static_cast<const char*>(data);
+    record_.insert(record_.end(), bytes, bytes + size);
+  };
+  append(p.data(), 3 * sizeof(double));
+  if (with_normals_) {
+    const Eigen::Vector3f as_float = normal.cast<float>();
+    append(as_float.data(), 3 * sizeof(float));
+  }
+  append(scalars, num_scalars_ * sizeof(float));
+  append(indices, num_index_fields_ * sizeof(uint32_t));
+  out.write(record_.data(), static_cast<std::streamsize>(record_.size()));
+}
+
+void PointWriter::Commit() {
+  if (written_ != count_) {
+    throw std::logic_error("PointWriter: " + std::to_string(written_) + " points written, " +
+                           std::to_string(count_) + " announced");
+  }
+  file_->Commit();
+}
+
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite) {
+  std::vector<std::string> scalar_names, index_names;
   for (const auto& scalar : cloud.scalars) {
     if (scalar.second.size() != cloud.points.size()) {
       throw std::invalid_argument("scalar property '" + scalar.first + "' has the wrong size");
     }
+    scalar_names.push_back(scalar.first);
   }
   for (const auto& field : cloud.index_fields) {
     if (field.second.size() != cloud.points.size()) {
       throw std::invalid_argument("index property '" + field.first + "' has the wrong size");
     }
+    index_names.push_back(field.first);
   }
-  const std::string extension = FileExtension(path);
-  if (extension == "ply") {
-    WritePly(path, cloud, overwrite);
-  } else if (extension == "xyz" || extension == "txt") {
-    WriteXyz(path, cloud, overwrite);
-  } else {
-    throw std::runtime_error("cannot write '" + path +
-                             "': the output extension must be .ply, .xyz or .txt");
+  const bool with_normals = !cloud.normals.empty();
+  PointWriter writer(path, overwrite, cloud.points.size(), with_normals, scalar_names,
+                     index_names, cloud.comments);
+  std::vector<float> scalars(scalar_names.size());
+  std::vector<uint32_t> indices(index_names.size());
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    for (size_t s = 0; s < scalars.size(); ++s) scalars[s] = cloud.scalars[s].second[i];
+    for (size_t s = 0; s < indices.size(); ++s) indices[s] = cloud.index_fields[s].second[i];
+    writer.Write(cloud.points[i], with_normals ? cloud.normals[i] : Point3::Zero(),
+                 scalars.data(), indices.data());
   }
+  writer.Commit();
 }
 
 }  // namespace lpd::experiments

@@ -13,7 +13,9 @@
 #define LPD_EXPERIMENTS_IO_POINT_CLOUD_IO_H_
 
 #include <cstdint>
+#include <functional>
 #include <istream>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +23,8 @@
 #include "energy/point3.h"
 
 namespace lpd::experiments {
+
+class AtomicOutputFile;
 
 struct PointCloud {
   energy::PointList points;
@@ -49,8 +53,39 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
                           const std::string& name);
 energy::PointList ReadPoints(const std::string& path);
 
+// Calls visit(p) for every point of the file at `path` in file order, holding one line or
+// one PLY vertex at a time (.xyz/.txt/.pts and .ply; other formats are read whole first),
+// with the checks and errors of ReadPointCloud.
+void ForEachPoint(const std::string& path, const std::function<void(const energy::Point3&)>& visit);
+
 // Writes `cloud` to `path` (".ply" or ".xyz"/".txt"); throws std::runtime_error on failure.
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite);
+
+// Writes a point set point by point in WritePointCloud's layout: binary PLY with x y z
+// (double), nx ny nz (float) when `with_normals`, the float `scalars`, then the uint
+// `index_fields`; or XYZ text (points only). `count` points must be written before Commit,
+// which puts the file in place (AtomicOutputFile; nothing appears without it).
+class PointWriter {
+ public:
+  PointWriter(const std::string& path, bool overwrite, size_t count, bool with_normals,
+              std::vector<std::string> scalars, std::vector<std::string> index_fields,
+              const std::vector<std::string>& comments = {});
+  ~PointWriter();
+  // `scalars` and `indices` hold one value per scalar and index field, in their order.
+  void Write(const energy::Point3& p, const energy::Point3& normal, const float* scalars,
+             const uint32_t* indices);
+  void Commit();
+
+ private:
+  std::unique_ptr<AtomicOutputFile> file_;
+  bool ply_;
+  size_t count_;
+  size_t written_ = 0;
+  bool with_normals_;
+  size_t num_scalars_;
+  size_t num_index_fields_;
+  std::vector<char> record_;
+};
 
 // Lower-cased extension of `path` without the dot ("" if none).
 std::string FileExtension(const std::string& path);

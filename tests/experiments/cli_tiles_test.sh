@@ -2,12 +2,15 @@
 # `lpd denoise --tile_points`: in one process and, when mpirun is installed, on 2 ranks. The
 # ranks give the one-process result; tiles too small for a neighbourhood, more ranks than
 # tiles and a tile that fails end the run with exit code 1, a message naming the problem (the
-# tile, for a failure) and no output file.
+# tile, for a failure), no output file and no temporary files.
 # Usage: cli_tiles_test.sh PATH_TO_LPD
 lpd=$(realpath "$1")
 source "$(dirname "$0")/cli_test_lib.sh"
 # mpirun refuses root without these (CI runs as root).
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_WAIT_POLICY=PASSIVE
+# The tiles' temporary files go here; none may be left behind, also after a failure.
+export TMPDIR="$dir/tmp"
+mkdir -p "$TMPDIR"
 cases=0
 
 # refused NAME PATTERN COMMAND...: exits with 1, stderr matches PATTERN, no out.* left.
@@ -41,7 +44,7 @@ refused halo_radii_zero "halo_radii" "$lpd" denoise cloud.xyz -o out.xyz --tile_
 refused failing_tile "tile [0-9]* of [0-9]* (.*) failed" "$lpd" denoise duplicates.xyz -o out.xyz --tile_points=1500
 
 if command -v mpirun >/dev/null; then
-  mpi=(mpirun --oversubscribe -np 2)
+  mpi=(timeout 300 mpirun --oversubscribe -np 2)
   cases=$((cases + 1))
   "${mpi[@]}" "$lpd" denoise "$dir/cloud.xyz" -o "$dir/two.xyz" --tile_points=1500 --quiet \
     >"$dir/stdout" 2>"$dir/stderr" || fail "2 ranks: $(tail -3 "$dir/stderr")"
@@ -60,4 +63,5 @@ PY
 else
   echo "mpirun not found: the 2-rank cases are skipped (apt-get install openmpi-bin)"
 fi
+[ -z "$(ls "$TMPDIR")" ] || fail "temporary files left behind: $(ls "$TMPDIR")"
 finish "$cases tiled cases"

@@ -1,7 +1,8 @@
 // Tiles and halos (solvers/tiling.h): the k-d split puts every point in one tile of balanced
-// size; the halo holds exactly the points within its width of the tile's box (brute force);
-// its width follows from the spacing of a grid; one tile is the untiled run bit for bit; and
-// eight tiles give the untiled result, also at the seams.
+// size, also when planned on a sample; the halo holds exactly the points within its width of
+// the tile's box (brute force); its width follows from the spacing of a grid; a tile without
+// halo is the untiled run bit for bit; and eight tiles give the untiled result, also at the
+// seams.
 #include "solvers/tiling.h"
 
 #include <algorithm>
@@ -45,6 +46,27 @@ TEST(PlanTiles, EveryPointIsInOneTileOfBalancedSize) {
   for (size_t i = 0; i < points.size(); ++i) ASSERT_EQ(times[i], 1) << i;
   EXPECT_EQ(PlanTiles(points, 20000).size(), 1u);
   EXPECT_THROW(PlanTiles(points, 0), std::invalid_argument);
+}
+
+TEST(TileTree, LocatesEveryPointInItsTileAndSurvivesFlattening) {
+  const energy::PointList points = RandomPoints(5000, 3);
+  const TileTree tree = PlanTileTree(points, 600);
+  const TileTree copy = TileTree::Unflatten(tree.Flatten());
+  EXPECT_EQ(copy.num_tiles, tree.num_tiles);
+  const std::vector<std::vector<int>> tiles = PlanTiles(points, 600);
+  for (int t = 0; t < tree.num_tiles; ++t) {
+    for (int i : tiles[t]) {
+      ASSERT_EQ(tree.Locate(points[i]), t);
+      ASSERT_EQ(copy.Locate(points[i]), t);
+    }
+  }
+  // Planned on a sample, the tree still splits the whole cloud evenly (5000 points, a 500
+  // point sample, leaves of 60 sample points: 8 tiles of about 625).
+  const energy::PointList sample(points.begin(), points.begin() + 500);
+  const TileTree sampled = PlanTileTree(sample, 60);
+  std::vector<int> counts(sampled.num_tiles, 0);
+  for (const energy::Point3& p : points) ++counts[sampled.Locate(p)];
+  for (int count : counts) EXPECT_NEAR(count, 5000.0 / sampled.num_tiles, 150);
 }
 
 TEST(HaloOf, HoldsExactlyThePointsWithinTheWidthOfTheTilesBox) {
@@ -97,14 +119,17 @@ NoisyShape NoisyCadPart(int n) {
   return noisy;
 }
 
-TEST(DenoiseTile, OneTileIsTheUntiledRun) {
+energy::PointList Gather(const energy::PointList& points, const std::vector<int>& indices) {
+  energy::PointList gathered;
+  for (int i : indices) gathered.push_back(points[i]);
+  return gathered;
+}
+
+TEST(DenoiseTile, WithoutAHaloItIsTheUntiledRun) {
   const NoisyShape noisy = NoisyCadPart(3000);
   const DenoiseOptions options = Defaults();
-  const std::vector<std::vector<int>> tiles = PlanTiles(noisy.points, 3000);
-  ASSERT_EQ(tiles.size(), 1u);
-  const TileOutcome tile = DenoiseTile(noisy.points, tiles[0], options, TilingOptions{3000});
+  const TileOutcome tile = DenoiseTile(noisy.points, {}, options);
   const DenoiseResult whole = DenoisePointSet(noisy.points, options);
-  EXPECT_TRUE(tile.halo.empty());
   for (size_t i = 0; i < noisy.points.size(); ++i) {
     ASSERT_EQ(tile.projected[i], whole.projected[i]) << i;
     ASSERT_EQ(tile.kept[i], whole.kept[i]) << i;
@@ -114,23 +139,24 @@ TEST(DenoiseTile, OneTileIsTheUntiledRun) {
 TEST(DenoiseTile, EightTilesGiveTheUntiledResultAlsoAtTheSeams) {
   const NoisyShape noisy = NoisyCadPart(16000);
   const DenoiseOptions options = Defaults();
-  const TilingOptions tiling{2000};
-  const std::vector<std::vector<int>> tiles = PlanTiles(noisy.points, tiling.tile_points);
+  const std::vector<std::vector<int>> tiles = PlanTiles(noisy.points, 2000);
   ASSERT_EQ(tiles.size(), 8u);
-  DenoiseResult tiled;
-  ResizeForTiles(noisy.points.size(), &tiled);
+  energy::PointList tiled(noisy.points.size());
   // A point within one halo of a tile border is in another tile's halo.
   std::vector<uint8_t> at_seam(noisy.points.size(), 0);
   for (const std::vector<int>& own : tiles) {
-    const TileOutcome tile = DenoiseTile(noisy.points, own, options, tiling);
-    PlaceTile(tile, &tiled);
-    for (int i : tile.halo) at_seam[i] = 1;
+    const energy::PointList own_points = Gather(noisy.points, own);
+    const std::vector<int> halo = HaloOf(
+        noisy.points, own, HaloWidth(own_points, options, TilingOptions().halo_radii));
+    const TileOutcome tile = DenoiseTile(own_points, Gather(noisy.points, halo), options);
+    for (size_t a = 0; a < own.size(); ++a) tiled[own[a]] = tile.projected[a];
+    for (int i : halo) at_seam[i] = 1;
   }
   const DenoiseResult whole = DenoisePointSet(noisy.points, options);
   double tiled_sum = 0.0, whole_sum = 0.0, tiled_seam = 0.0, whole_seam = 0.0;
   int seam_points = 0;
   for (size_t i = 0; i < noisy.points.size(); ++i) {
-    const double a = noisy.shape.DistanceToSurface(tiled.projected[i]);
+    const double a = noisy.shape.DistanceToSurface(tiled[i]);
     const double b = noisy.shape.DistanceToSurface(whole.projected[i]);
     tiled_sum += a;
     whole_sum += b;
