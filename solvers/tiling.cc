@@ -16,8 +16,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Splits points[first, last) of `indices` at the median of the box's longest axis until each
-// part holds at most `capacity`; returns the node's index in tree->nodes.
+// Splits points[first, last) of `indices` across the box's longest axis until each part
+// holds at most `capacity`, into the fewest parts that allows, L = ceil(count / capacity),
+// of near-equal size: the cut leaves floor(L / 2) parts' worth on the low side. Returns the
+// node's index in tree->nodes.
 int Split(const energy::PointList& points, std::vector<int>::iterator first,
           std::vector<int>::iterator last, int capacity, TileTree* tree) {
   const int node = static_cast<int>(tree->nodes.size());
@@ -31,11 +33,12 @@ int Split(const energy::PointList& points, std::vector<int>::iterator first,
   for (auto it = first; it != last; ++it) box.extend(points[*it]);
   int axis = 0;
   box.sizes().maxCoeff(&axis);
-  const auto middle = first + count / 2;
+  const long parts = (count + capacity - 1) / capacity;
+  const auto middle = first + count * (parts / 2) / parts;
   auto below = [&](int a, int b) { return points[a][axis] < points[b][axis]; };
   std::nth_element(first, middle, last, below);
-  // The low side ends at the largest coordinate before the median (points equal to it go
-  // low, as Locate sends them).
+  // The low side ends at its largest coordinate (points equal to it go low, as Locate sends
+  // them).
   const double value = points[*std::max_element(first, middle, below)][axis];
   const int low = Split(points, first, middle, capacity, tree);
   const int high = Split(points, middle, last, capacity, tree);

@@ -1,7 +1,7 @@
 // lpd: denoising a cloud tile by tile, for scans too large for one problem or one process.
 //
-// The cloud is split into spatial tiles with balanced point counts (a k-d split at the median
-// of the longest axis, down to at most `tile_points` points each). A tile is denoised with
+// The cloud is split into spatial tiles with balanced point counts (a k-d split across the
+// longest axis into ceil(n / tile_points) tiles of near-equal size). A tile is denoised with
 // its halo: every other point within a distance w of the tile's bounding box. Only the
 // tile's own points keep their result. A point's result depends on its neighbourhood N(i),
 // on its neighbours' planes (their own neighbourhoods, and the smoothing of Eq. (5) over a
@@ -51,8 +51,8 @@ struct TileTree {
   static TileTree Unflatten(const std::vector<double>& values);
 };
 
-// Splits at the median of the longest axis of `points` (a cloud or a uniform sample of one)
-// until every leaf holds at most `capacity` of them. Throws std::invalid_argument if
+// Splits `points` (a cloud or a uniform sample of one) across the longest axis until every
+// leaf holds at most `capacity` of them, into ceil(n / capacity) leaves of near-equal size. Throws std::invalid_argument if
 // capacity < 1.
 TileTree PlanTileTree(const energy::PointList& points, int capacity);
 
