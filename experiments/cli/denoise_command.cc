@@ -295,6 +295,11 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
     if (resume || !FLAGS_save_state.empty()) {
       throw std::invalid_argument("--tile_points cannot be combined with --save_state or --resume");
     }
+    if (options.EffectiveInitialization() == solvers::Initialization::kInputNormals) {
+      throw std::invalid_argument(
+          "--tile_points cannot be combined with --initialization=input_normals (tiles read "
+          "points only)");
+    }
     return RunTiled(arguments, options, tiling);
   }
   const Clock::time_point start = Clock::now();

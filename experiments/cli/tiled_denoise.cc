@@ -89,13 +89,17 @@ TileSummary RunTile(const TileStore& store, const solvers::TileTree& tree, int t
     own.push_back(index);
     own_points.push_back(p);
   });
+  TileSummary summary;
+  summary.tile = t;
+  if (own.empty()) {  // ties at a split can empty a tile of the sample's plan
+    store.WriteTile(t, own, solvers::TileOutcome());
+    return summary;
+  }
   if (static_cast<int>(own.size()) < FewestTilePoints(options)) {
     throw std::invalid_argument("it holds " + std::to_string(own.size()) + " points, fewer than the " +
                                 std::to_string(FewestTilePoints(options)) +
                                 " a neighbourhood needs (raise --tile_points)");
   }
-  TileSummary summary;
-  summary.tile = t;
   for (const energy::Point3& p : own_points) summary.box.extend(p);
   summary.halo_width = solvers::HaloWidth(
       own_points, ShareOfBudget(options, own_points.size(), num_points), tiling.halo_radii);
