@@ -102,6 +102,8 @@ bool IsBlankOrComment(const std::string& line) {
   return true;
 }
 
+constexpr char kNoPoints[] = "the file contains no points";
+
 // Calls visit(p, rest) for every point line of an XYZ file, `rest` pointing past x y z.
 template <class Visit>
 void VisitXyz(const std::string& path, std::istream& in, Visit visit) {
@@ -542,7 +544,7 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
     Fail(name, 0, "unknown point-cloud format '." + extension +
                       "' (expected .xyz, .txt, .pts, .ply, .off or .obj)");
   }
-  if (cloud.points.empty()) Fail(name, 0, "the file contains no points");
+  if (cloud.points.empty()) Fail(name, 0, kNoPoints);
   return cloud;
 }
 
@@ -587,7 +589,7 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
       ++count;
     });
   }
-  if (count == 0) Fail(path, 0, "no points");
+  if (count == 0) Fail(path, 0, kNoPoints);
 }
 
 PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,

@@ -95,6 +95,56 @@ TEST_F(PointCloudIoTest, IndexFieldsStayExactPastTheFloatMantissa) {
   EXPECT_EQ(read.FindScalar("source_index"), nullptr);
 }
 
+// Every point ForEachPoint visits, or the message of the exception it throws.
+std::pair<energy::PointList, std::string> StreamPoints(const std::string& path) {
+  energy::PointList points;
+  try {
+    ForEachPoint(path, [&](const energy::Point3& p) { points.push_back(p); });
+  } catch (const std::runtime_error& error) {
+    return {points, error.what()};
+  }
+  return {points, ""};
+}
+
+TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
+  PointCloud cloud;
+  cloud.points = {{1.5, -2.25, 1e-9}, {3, 4, 5}, {-7, 0.125, 2}};
+  cloud.normals = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
+  cloud.scalars = {{"score", {0.5f, 0.25f, 1.0f}}};
+  const std::string binary = (directory_ / "binary.ply").string();
+  WritePointCloud(binary, cloud, false);
+  const std::string paths[] = {
+      binary,
+      Write("ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                         "property float y\nproperty float z\nend_header\n1 2 3\n4 5 6\n"),
+      Write("a.xyz", "# comment\n1 2 3 9 9\n\n4 5 6\n"),
+      Write("a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")};
+  for (const std::string& path : paths) {
+    const auto [streamed, error] = StreamPoints(path);
+    EXPECT_EQ(error, "") << path;
+    EXPECT_EQ(streamed, ReadPoints(path)) << path;
+  }
+  for (const char* bad : {"nan.xyz", "empty.xyz", "bad.ply"}) {
+    const std::string path =
+        Write(bad, std::string(bad) == "nan.xyz"   ? "1 2 3\nnan 2 3\n"
+                   : std::string(bad) == "bad.ply" ? "ply\nformat ascii 1.0\nelement vertex 2\n"
+                                                     "property float x\nend_header\n1\n2\n"
+                                                   : "");
+    EXPECT_EQ(StreamPoints(path).second, ReadError(path)) << bad;
+    EXPECT_NE(ReadError(path), "") << bad;
+  }
+}
+
+TEST_F(PointCloudIoTest, APointWriterShortOfItsCountLeavesNoFile) {
+  const std::string path = (directory_ / "short.ply").string();
+  {
+    PointWriter writer(path, false, 2, false, {}, {});
+    writer.Write({1, 2, 3}, {0, 0, 0}, nullptr, nullptr);
+    EXPECT_THROW(writer.Commit(), std::logic_error);
+  }
+  EXPECT_FALSE(fs::exists(path));
+}
+
 TEST_F(PointCloudIoTest, BadFilesGiveOneLineErrorsNamingTheProblem) {
   EXPECT_NE(ReadError((directory_ / "missing.xyz").string()).find("cannot open"),
             std::string::npos);
