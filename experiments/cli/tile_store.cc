@@ -9,6 +9,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "experiments/io/interruption.h"
 #include "experiments/io/point_cloud_io.h"
 
 namespace lpd::experiments {
@@ -67,6 +68,7 @@ class Spooler {
 
   void Add(const energy::Point3& p) {
     if (count_ >= UINT32_MAX) throw std::runtime_error("more than 2^32 - 1 points");
+    if (count_ % kChunkPoints == 0) ThrowIfInterrupted();
     out_.write(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
     if (sample_->size() < sample_size_) {
       sample_->push_back(p);
@@ -135,9 +137,13 @@ std::string TileStore::CreateDirectory() {
 }
 
 TileStore::TileStore(std::string directory, bool owner)
-    : directory_(std::move(directory)), owner_(owner) {}
+    : directory_(std::move(directory)), owner_(owner) {
+  slots_.push_back(RegisterTemporaryFile(directory_));
+  slots_.push_back(RegisterTemporaryFile(directory_ + "/points.bin"));
+}
 
 TileStore::~TileStore() {
+  for (int slot : slots_) UnregisterTemporaryFile(slot);
   if (!owner_ || directory_.empty()) return;
   std::error_code ignored;
   std::filesystem::remove_all(directory_, ignored);
@@ -164,6 +170,7 @@ void TileStore::Scan(const std::function<void(uint32_t, const energy::Point3&)>&
   while (in) {
     in.read(reinterpret_cast<char*>(chunk.data()),
             static_cast<std::streamsize>(chunk.size() * sizeof(double)));
+    ThrowIfInterrupted();
     const size_t read = static_cast<size_t>(in.gcount()) / (3 * sizeof(double));
     for (size_t a = 0; a < read; ++a, ++index) {
       visit(index, energy::Point3(chunk[3 * a], chunk[3 * a + 1], chunk[3 * a + 2]));
@@ -173,6 +180,7 @@ void TileStore::Scan(const std::function<void(uint32_t, const energy::Point3&)>&
 
 void TileStore::WriteTile(int tile, const std::vector<uint32_t>& own,
                           const solvers::TileOutcome& outcome) const {
+  slots_.push_back(RegisterTemporaryFile(TilePath(directory_, tile)));
   std::ofstream out(TilePath(directory_, tile), std::ios::binary);
   char bytes[kRecordBytes];
   for (size_t a = 0; a < own.size(); ++a) {

@@ -69,6 +69,9 @@ class TileStore {
  private:
   std::string directory_;
   bool owner_;
+  // Slots of the interruption module's watchdog (io/interruption.h) for the directory and
+  // its files, so that a forced exit after a signal removes them too.
+  mutable std::vector<int> slots_;
 };
 
 }  // namespace lpd::experiments

@@ -206,6 +206,8 @@ TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& point
     try {
       ThrowIfInterrupted();
       summary = RunTile(*store, tree, t, run.num_points, options, tiling);
+    } catch (const Interrupted&) {
+      throw;  // a signal: the command reports it, with its exit code (interruption.h)
     } catch (const std::exception& error) {
       if (world.is_root()) store.reset();
       world.Fail("tile " + std::to_string(t + 1) + " of " + std::to_string(run.tiles) +

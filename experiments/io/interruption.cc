@@ -21,10 +21,14 @@ char slot_path[kSlots][kPathBytes];
 
 const char* SignalName(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTERM"; }
 
-// Async-signal-safe: unlink, write and _exit only.
+// Async-signal-safe: unlink, rmdir, write and _exit only. Files first, then the
+// directories they were in.
 [[noreturn]] void RemoveTemporaryFilesAndExit(int signal) {
   for (int s = 0; s < kSlots; ++s) {
     if (slot_state[s].load() == 2) ::unlink(slot_path[s]);
+  }
+  for (int s = 0; s < kSlots; ++s) {
+    if (slot_state[s].load() == 2) ::rmdir(slot_path[s]);
   }
   static const char kMessage[] = "lpd: interrupted; no output written\n";
   [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, kMessage, sizeof(kMessage) - 1);

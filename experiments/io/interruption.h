@@ -35,9 +35,10 @@ class Interrupted : public std::runtime_error {
 // Throws Interrupted if a signal arrived.
 void ThrowIfInterrupted();
 
-// Temporary files that the watchdog removes before a forced exit. RegisterTemporaryFile
-// returns a slot for UnregisterTemporaryFile, or -1 when all slots are taken (then the file is
-// only removed by its owner).
+// Temporary files that the watchdog removes before a forced exit, and temporary directories,
+// removed after the files when they are empty then. RegisterTemporaryFile returns a slot for
+// UnregisterTemporaryFile, or -1 when all slots are taken (then the file is only removed by
+// its owner).
 int RegisterTemporaryFile(const std::string& path);
 void UnregisterTemporaryFile(int slot);
 

@@ -44,6 +44,21 @@ refused tiles_with_input_normals "input_normals" "$lpd" denoise cloud.xyz -o out
 refused halo_radii_zero "halo_radii" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --halo_radii=0
 refused failing_tile "tile [0-9]* of [0-9]* (.*) failed" "$lpd" denoise duplicates.xyz -o out.xyz --tile_points=1500
 
+# A signal stops a tiled run with 128 + its number and removes the tiles' files (checked at
+# the end with the others).
+cases=$((cases + 1))
+"$lpd" noise --shape=cad_part --points=300000 --sigma=0.005 -o "$dir/large.xyz" --quiet >/dev/null
+"$lpd" denoise "$dir/large.xyz" -o "$dir/out_interrupted.xyz" --tile_points=100000 --quiet \
+  >/dev/null 2>"$dir/stderr" &
+pid=$!
+sleep 1.5
+kill -INT "$pid"
+wait "$pid"
+code=$?
+[ "$code" -eq 130 ] || fail "interrupted tiled run: exit code $code: $(tail -1 "$dir/stderr")"
+[ ! -e "$dir/out_interrupted.xyz" ] || fail "interrupted tiled run: left an output"
+echo "interrupted: exit $code: $(tail -1 "$dir/stderr")"
+
 if command -v mpirun >/dev/null; then
   mpi=(timeout 300 mpirun --oversubscribe -np 2)
   cases=$((cases + 1))
