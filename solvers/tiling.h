@@ -52,8 +52,8 @@ struct TileTree {
 };
 
 // Splits `points` (a cloud or a uniform sample of one) across the longest axis until every
-// leaf holds at most `capacity` of them, into ceil(n / capacity) leaves of near-equal size. Throws std::invalid_argument if
-// capacity < 1.
+// leaf holds at most `capacity` of them, into ceil(n / capacity) leaves of near-equal size.
+// Throws std::invalid_argument if capacity < 1.
 TileTree PlanTileTree(const energy::PointList& points, int capacity);
 
 // The own points of each tile of PlanTileTree(points, tile_points) (input indices,

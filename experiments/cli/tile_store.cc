@@ -81,7 +81,9 @@ class Spooler {
 
   size_t Finish() {
     out_.close();
-    if (!out_) throw std::runtime_error("writing the tiles' copy of the points failed (disk full?)");
+    if (!out_) {
+      throw std::runtime_error("writing the tiles' copy of the points failed (disk full?)");
+    }
     return count_;
   }
 

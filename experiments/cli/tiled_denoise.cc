@@ -96,7 +96,8 @@ TileSummary RunTile(const TileStore& store, const solvers::TileTree& tree, int t
     return summary;
   }
   if (static_cast<int>(own.size()) < FewestTilePoints(options)) {
-    throw std::invalid_argument("it holds " + std::to_string(own.size()) + " points, fewer than the " +
+    throw std::invalid_argument("it holds " + std::to_string(own.size()) +
+                                " points, fewer than the " +
                                 std::to_string(FewestTilePoints(options)) +
                                 " a neighbourhood needs (raise --tile_points)");
   }
@@ -128,8 +129,10 @@ TileSummary RunTile(const TileStore& store, const solvers::TileTree& tree, int t
   return summary;
 }
 
-std::string Plural(int count, const std::string& noun) {
-  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+// "1 tile", "2 tiles"; `plural` for nouns not made with an s.
+std::string Count(int count, const std::string& noun, const std::string& plural = "") {
+  return std::to_string(count) + " " +
+         (count == 1 ? noun : plural.empty() ? noun + "s" : plural);
 }
 
 }  // namespace
@@ -167,6 +170,8 @@ TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& point
       plan.insert(plan.begin(), static_cast<double>(plan.size()));
       plan.push_back(static_cast<double>(run.num_points));
       plan.insert(plan.end(), tree.begin(), tree.end());
+    } catch (const Interrupted&) {
+      throw;  // a signal: the command reports it, with its exit code (interruption.h)
     } catch (const std::exception& error) {
       store.reset();
       world.Fail(error.what());
@@ -175,8 +180,8 @@ TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& point
   world.Broadcast(&plan);
   const size_t name_length = static_cast<size_t>(plan[0]);
   if (!world.is_root()) {
-    store = std::make_unique<TileStore>(std::string(plan.begin() + 1, plan.begin() + 1 + name_length),
-                                        /*owner=*/false);
+    const std::string directory(plan.begin() + 1, plan.begin() + 1 + name_length);
+    store = std::make_unique<TileStore>(directory, /*owner=*/false);
   }
   run.num_points = static_cast<size_t>(plan[1 + name_length]);
   const solvers::TileTree tree = solvers::TileTree::Unflatten(
@@ -184,7 +189,7 @@ TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& point
   run.tiles = tree.num_tiles;
   if (world.size() > run.tiles) {
     if (world.is_root()) store.reset();
-    world.FailEverywhere(Plural(world.size(), "rank") + " for " + Plural(run.tiles, "tile") +
+    world.FailEverywhere(Count(world.size(), "rank") + " for " + Count(run.tiles, "tile") +
                          ": start at most as many ranks, or lower --tile_points");
   }
   if (!threads_given && world.size() > 1) {
@@ -194,9 +199,9 @@ TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& point
   run.threads_per_rank = options.settings.num_threads;
   if (world.is_root() && !quiet) {
     std::fprintf(stderr, "%zu points in %s of about %d points on %s x %s\n", run.num_points,
-                 Plural(run.tiles, "tile").c_str(), tiling.tile_points,
-                 Plural(world.size(), "process").c_str(),
-                 Plural(run.threads_per_rank, "thread").c_str());
+                 Count(run.tiles, "tile").c_str(), tiling.tile_points,
+                 Count(world.size(), "process", "processes").c_str(),
+                 Count(run.threads_per_rank, "thread").c_str());
   }
 
   Progress progress(run.num_points, run.tiles, quiet, &run);

@@ -22,7 +22,9 @@ energy::PointList RandomPoints(int n, uint64_t seed) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   energy::PointList points(n);
-  for (energy::Point3& p : points) p = {2.0 * uniform(random), uniform(random), 0.5 * uniform(random)};
+  for (energy::Point3& p : points) {
+    p = {2.0 * uniform(random), uniform(random), 0.5 * uniform(random)};
+  }
   return points;
 }
 
