@@ -112,18 +112,14 @@ std::vector<std::vector<int>> PlanTiles(const energy::PointList& points, int til
   return tiles;
 }
 
-Eigen::AlignedBox3d BoundingBoxOf(const energy::PointList& points,
-                                  const std::vector<int>& indices) {
-  Eigen::AlignedBox3d box;
-  for (int i : indices) box.extend(points[i]);
-  return box;
-}
-
 std::vector<int> HaloOf(const energy::PointList& points, const std::vector<int>& own,
                         double width) {
-  const Eigen::AlignedBox3d box = BoundingBoxOf(points, own);
+  Eigen::AlignedBox3d box;
   std::vector<uint8_t> is_own(points.size(), 0);
-  for (int i : own) is_own[i] = 1;
+  for (int i : own) {
+    box.extend(points[i]);
+    is_own[i] = 1;
+  }
   std::vector<int> halo;
   for (size_t i = 0; i < points.size(); ++i) {
     if (!is_own[i] && InHalo(box, width, points[i])) halo.push_back(static_cast<int>(i));

@@ -106,7 +106,7 @@ TileSummary RunTile(const TileStore& store, const solvers::TileTree& tree, int t
       own_points, ShareOfBudget(options, own_points.size(), num_points), tiling.halo_radii);
   energy::PointList halo_points;
   store.Scan([&](uint32_t, const energy::Point3& p) {
-    if (tree.Locate(p) != t && solvers::InHalo(summary.box, summary.halo_width, p)) {
+    if (solvers::InHalo(summary.box, summary.halo_width, p) && tree.Locate(p) != t) {
       halo_points.push_back(p);
     }
   });

@@ -519,12 +519,22 @@ std::string FileExtension(const std::string& path) {
   return extension;
 }
 
-PointCloud ReadPointCloud(const std::string& path) {
+namespace {
+
+// The file at `path` opened for reading, or a one-line error naming why it cannot be.
+std::ifstream OpenInput(const std::string& path) {
   if (path.empty()) throw std::runtime_error("the input file name is empty");
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) Fail(path, 0, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+  return in;
+}
+
+}  // namespace
+
+PointCloud ReadPointCloud(const std::string& path) {
+  std::ifstream in = OpenInput(path);
   return ReadPointCloud(in, FileExtension(path), path);
 }
 
@@ -570,11 +580,7 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
     for (const Point3& p : ReadPoints(path)) visit(p);
     return;
   }
-  if (path.empty()) throw std::runtime_error("the input file name is empty");
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) Fail(path, 0, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+  std::ifstream in = OpenInput(path);
   SkipByteOrderMark(path, in);
   long count = 0;
   if (extension == "ply") {
