@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The defaults at their own stopping point against the same run continued to 50 iterations
-# (--energy_tolerance=0), on the shared models with a clean mesh: mean exact distance to the
-# mesh over its bounding-box diagonal, and the ratio (50 iterations / stop).
-# Usage: scripts/convergence_table.sh [LPD_DATA]   (about 2 minutes on 2 cores)
+# The defaults at their own stopping point against the same run continued to 50 and to 100
+# iterations (both stopping tests off), on the shared models with a clean mesh and on two
+# low-noise mesh samples (k at its floor of 12, where the progress test stops the run): mean
+# exact distance to the mesh over its bounding-box diagonal, and the ratios to the stop.
+# Usage: scripts/convergence_table.sh [LPD_DATA]   (about 4 minutes on 2 cores)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 data=${1:-${LPD_DATA:-../shared/data}}
@@ -10,17 +11,24 @@ data=${1:-${LPD_DATA:-../shared/data}}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mean() { ./build/lpd metrics "$1" --ground_truth="$2" | awk '/^mean_distance/ {print $3}'; }
-echo "| input | iterations at stop | distance at stop | distance after 50 | ratio |"
-echo "|---|---|---|---|---|"
-for name in fandisk_noise_0.01 fandisk_noise_0.03 joint_noise_0.01 joint_noise_0.03; do
-  mesh="$data/meshes/${name%_noise*}.off"
-  ./build/lpd denoise "$data/noisy/$name.xyz" -o "$tmp/stop.xyz" --quiet >"$tmp/log.txt" 2>/dev/null
-  ./build/lpd denoise "$data/noisy/$name.xyz" -o "$tmp/50.xyz" --quiet --energy_tolerance=0 \
-    >/dev/null 2>&1
+./build/lpd noise --mesh="$data/meshes/fandisk.off" --points=25000 --sigma=0.0012 \
+  -o "$tmp/fandisk_mesh_0.0012.ply" >/dev/null
+./build/lpd noise --mesh="$data/meshes/bunny.off" --points=30000 --sigma=0.0008 \
+  -o "$tmp/bunny_mesh_0.0008.ply" >/dev/null
+echo "| input | iterations at stop | distance at stop | after 50 | after 100 | ratios |"
+echo "|---|---|---|---|---|---|"
+for input in "$data"/noisy/{fandisk,joint}_noise_0.0{1,3}.xyz "$tmp"/*_mesh_*.ply; do
+  name=$(basename "${input%.*}")
+  mesh="$data/meshes/${name%%_*}.off"
+  ./build/lpd denoise "$input" -o "$tmp/stop.xyz" --quiet >"$tmp/log.txt" 2>/dev/null
   iterations=$(grep -o 'iterations [0-9]*' "$tmp/log.txt" | awk '{print $2}')
-  stop=$(mean "$tmp/stop.xyz" "$mesh")
-  fifty=$(mean "$tmp/50.xyz" "$mesh")
-  awk -v n="$name" -v it="$iterations" -v a="$stop" -v b="$fifty" \
-    'BEGIN { printf "| %s | %s | %.4e | %.4e | %.3f |\n", n, it, a, b, b / a }'
-  rm -f "$tmp/stop.xyz" "$tmp/50.xyz"
+  row=("$(mean "$tmp/stop.xyz" "$mesh")")
+  for n in 50 100; do
+    ./build/lpd denoise "$input" -o "$tmp/$n.xyz" --quiet --energy_tolerance=0 \
+      --progress_tolerance=0 --max_iters="$n" >/dev/null 2>&1
+    row+=("$(mean "$tmp/$n.xyz" "$mesh")")
+  done
+  awk -v n="$name" -v it="$iterations" -v a="${row[0]}" -v b="${row[1]}" -v c="${row[2]}" \
+    'BEGIN { printf "| %s | %s | %.4e | %.4e | %.4e | %.3f / %.3f |\n", n, it, a, b, c, b / a, c / a }'
+  rm -f "$tmp"/{stop,50,100}.xyz
 done

@@ -22,6 +22,8 @@ bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
     out << "inner_iters must be >= 1, got " << inner_iterations;
   } else if (!(energy_tolerance >= 0.0) || !std::isfinite(energy_tolerance)) {
     out << "energy_tolerance must be finite and >= 0, got " << energy_tolerance;
+  } else if (!(progress_tolerance >= 0.0) || !std::isfinite(progress_tolerance)) {
+    out << "progress_tolerance must be finite and >= 0, got " << progress_tolerance;
   } else if (energy_window < 1) {
     out << "energy_window must be >= 1, got " << energy_window;
   } else if (!gnc.IsValid(error)) {
@@ -176,18 +178,28 @@ class AlternatingRun {
     return step;
   }
 
-  // The stopping rule: |E_t - E_{t-w}| <= tolerance |E_{t-w}| over the iterations run at the
-  // target selectivities.
+  // The stopping rules over the iterations run at the target selectivities, w =
+  // energy_window: |E_t - E_{t-w}| <= energy_tolerance |E_{t-w}|, or
+  // E_{t-w} - E_t <= progress_tolerance (E_1 - E_t).
   bool Converged(double total) {
     std::vector<double>& history = state_.energy_history;
     history.push_back(total);
     const int w = options_.energy_window;
-    if (options_.energy_tolerance <= 0.0 || static_cast<int>(history.size()) <= w) return false;
+    if (static_cast<int>(history.size()) <= w) return false;
     const double before = history[history.size() - 1 - w];
-    if (std::abs(total - before) > options_.energy_tolerance * std::abs(before)) return false;
+    const double change = std::abs(total - before);
     std::ostringstream out;
-    out << "energy changed by less than " << 100.0 * options_.energy_tolerance << "% over " << w
-        << " iterations";
+    if (options_.energy_tolerance > 0.0 &&
+        change <= options_.energy_tolerance * std::abs(before)) {
+      out << "energy changed by less than " << 100.0 * options_.energy_tolerance << "% over "
+          << w << " iterations";
+    } else if (options_.progress_tolerance > 0.0 && total <= before &&
+               before - total <= options_.progress_tolerance * (history.front() - total)) {
+      out << "the last " << w << " iterations lowered the energy by less than "
+          << 100.0 * options_.progress_tolerance << "% of its fall since the first";
+    } else {
+      return false;
+    }
     Stop(TerminationType::kConvergence, out.str());
     return true;
   }

@@ -3,8 +3,9 @@
 // Each outer iteration runs the local step (H by Eq. 10, then L by Eq. 6) and then
 // `inner_iterations` global passes (T by Eq. 9, M by Eq. 7, S by Eq. 8). Every update is the
 // exact minimizer of Eq. (5) over its block, so once H is on the unit sphere the energy never
-// increases. The run stops after `max_iterations`, or when the total energy changed by less
-// than `energy_tolerance` (relative) over the last `energy_window` iterations.
+// increases. The run stops after `max_iterations`, or when the last `energy_window` iterations
+// changed the total energy by less than `energy_tolerance` of its value, or lowered it by
+// less than `progress_tolerance` of what the run has lowered it since its first iteration.
 //
 // Options beyond the paper, for ablations: S held at 1 (Fig. 4), a scale-aware mu_l from the
 // residuals of the first local fit, and graduated non-convexity on mu_l and/or mu_m. A run
@@ -47,7 +48,7 @@ class AlternatingMinimizer {
   struct Options {
     // ---- schedule (Alg. 1) ----
     // Outer iterations at most (maxIter of Alg. 1; the reference implementation runs 5).
-    int max_iterations = 50;
+    int max_iterations = 100;
     // (T, M, S) passes per outer iteration (Alg. 1 line 13: 2).
     int inner_iterations = 2;
     // Stop when |E_t - E_{t-w}| <= energy_tolerance |E_{t-w}|, w = energy_window (Sec. 3.3:
@@ -55,6 +56,13 @@ class AlternatingMinimizer {
     // because with data-scaled weights the run converges instead of drifting). 0 disables
     // the test.
     double energy_tolerance = 1e-3;
+    // Also stop when E_{t-w} - E_t <= progress_tolerance (E_1 - E_t), E_1 the energy after the
+    // first iteration at the targets: what is left to gain is small against what was gained.
+    // Low-noise inputs (k at its floor) have a slow mode, a few points near sharp edges that
+    // keep switching sides, which lowers the energy by 0.1% per iteration long after the
+    // output has settled; the relative test alone stops them only after 60-170 iterations.
+    // 0 disables the test (the paper preset).
+    double progress_tolerance = 1e-3;
     int energy_window = 3;
     // Alg. 1 line 16 (Eq. 8); false holds every s_ij at 1, the ablation of Fig. 4.
     bool optimize_orientations = true;

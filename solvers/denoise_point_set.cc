@@ -280,6 +280,17 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     removed_by_last = next.num_removed;
     last_rows = std::move(rows);
   }
+  if (options.final_step.remove_outliers && result.removal_note.empty()) {
+    const std::vector<uint8_t> isolated = FlagIsolatedPoints(
+        points, result.kept, options.final_step.isolation, options.settings.num_threads);
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (!isolated[i]) continue;
+      result.indicators.is_outlier[i] = 1;
+      result.kept[i] = 0;
+      ++result.num_isolated;
+    }
+    result.num_removed += result.num_isolated;
+  }
   result.num_outliers = 0;
   result.num_features = 0;
   for (size_t i = 0; i < points.size(); ++i) {

@@ -67,6 +67,7 @@ struct DenoiseResult {
   std::vector<uint8_t> kept;
   int num_outliers = 0;              // flagged by the indicator
   int num_removed = 0;               // actually removed
+  int num_isolated = 0;              // of those, found by the isolation test
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
@@ -112,7 +113,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
 // Further passes after `first` (options.final_step.outlier_passes): while the last pass
 // removed more than rerun_removed_fraction of its points, the points it kept are denoised
 // again from their input coordinates `points` and their results replace the earlier ones.
-// Removed points keep the values of the pass that removed them. `callback` sees every pass;
+// Removed points keep the values of the pass that removed them. Then the kept points that
+// are isolated among the kept input points (options.final_step.isolation) are removed too. `callback` sees every pass;
 // `normals` (input order) are those of StartDenoising.
 DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
                                    DenoiseResult first,

@@ -40,7 +40,7 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
   } else if (!(rerun_removed_fraction >= 0.0 && rerun_removed_fraction <= 1.0)) {
     out << "outlier_rerun_fraction must be in [0, 1], got " << rerun_removed_fraction;
   } else {
-    return snapping.IsValid(error);
+    return isolation.IsValid(error) && snapping.IsValid(error);
   }
   *error = out.str();
   return false;

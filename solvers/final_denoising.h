@@ -30,6 +30,7 @@
 #include "energy/problem.h"
 #include "energy/variables.h"
 #include "solvers/feature_snapping.h"
+#include "solvers/isolated_points.h"
 
 namespace lpd::solvers {
 
@@ -58,6 +59,9 @@ struct FinalDenoisingOptions {
   // that neither the removed outliers nor their planes shape the rest (paper: 1 pass).
   int outlier_passes = 2;
   double rerun_removed_fraction = 0.05;
+  // After the passes, kept points far from every other kept point are outliers too
+  // (isolated_points.h; paper preset: off).
+  IsolationOptions isolation;
   // The optional feature improvement of Sec. 3.4 (off by default, as in the paper's runs).
   bool snap_features = false;
   FeatureSnappingOptions snapping;

@@ -27,11 +27,13 @@ DenoiseOptions PresetOptions(Preset preset) {
   options.minimizer.max_iterations = 5;
   options.minimizer.inner_iterations = 2;
   options.minimizer.energy_tolerance = 0.01;
+  options.minimizer.progress_tolerance = 0.0;
   options.final_step.projection = Projection::kPlane;
   options.final_step.blended_surfaces = 1;
   options.final_step.outlier_fraction = 0.9;
   options.final_step.feature_fraction = 0.7;
   options.final_step.outlier_passes = 1;
+  options.final_step.isolation.radius_factor = 0.0;
   return options;
 }
 

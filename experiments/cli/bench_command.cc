@@ -33,6 +33,7 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
   const Clock::time_point start = Clock::now();
   solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
   options.minimizer.energy_tolerance = 0.0;
+  options.minimizer.progress_tolerance = 0.0;
   options.minimizer.trace_blocks = false;
   const energy::PointList points = ReadPoints(arguments[0]);
   const double read_seconds = SecondsSince(start);

@@ -205,10 +205,10 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
   std::fprintf(stderr, "%s\n", result.summary.BriefReport().c_str());
   if (!result.removal_note.empty()) std::fprintf(stderr, "note: %s\n", result.removal_note.c_str());
   std::printf(
-      "points in %zu, out %zu, outliers flagged %d, removed %d, feature points %d, "
-      "iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
-      num_input_points, num_output_points, result.num_outliers, result.num_removed,
-      result.num_features, result.summary.num_iterations, result.passes, result.total_seconds,
+      "points in %zu, out %zu, outliers flagged %d (%d isolated), removed %d, feature points "
+      "%d, iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
+      num_input_points, num_output_points, result.num_outliers, result.num_isolated,
+      result.num_removed, result.num_features, result.summary.num_iterations, result.passes, result.total_seconds,
       result.setup_seconds);
   std::string chosen;
   if (result.neighborhood.spacing > 0.0) {

@@ -53,13 +53,16 @@ DEFINE_string(initialization, "auto",
               "alternating, plane_fit for ceres)");
 DEFINE_int32(initialization_seed, 1, "random seed of --initialization=random");
 // ---- schedule (Alg. 1) ----
-DEFINE_int32(max_iters, 50,
+DEFINE_int32(max_iters, 100,
              "maximum outer iterations of Alg. 1 (paper preset: 5, as the reference "
-             "implementation; the default converges well before 50)");
+             "implementation; the default converges after 20-60)");
 DEFINE_int32(inner_iters, 2, "(T, M, S) passes per outer iteration (paper: 2)");
 DEFINE_double(energy_tolerance, 1e-3,
               "stop when the energy changes by less than this fraction over three "
-              "iterations (paper: 0.01); 0 runs all iterations");
+              "iterations (paper: 0.01); 0 with --progress_tolerance=0 runs all iterations");
+DEFINE_double(progress_tolerance, 1e-3,
+              "also stop when the last three iterations lowered the energy by less than this "
+              "fraction of its fall since the first iteration (paper preset: 0, off)");
 DEFINE_bool(optimize_orientations, true,
             "update the orientations s_ij (Eq. 8); false holds them at 1 (ablation of Fig. 4)");
 DEFINE_double(mu_l_noise_sigmas, 4.0,
@@ -115,6 +118,11 @@ DEFINE_int32(outlier_passes, 2,
              "their input coordinates (paper preset: 1)");
 DEFINE_double(outlier_rerun_fraction, 0.05,
               "share of removed points above which another pass runs");
+DEFINE_double(isolation_factor, 3.0,
+              "after the passes, a kept point whose --isolation_neighbors-th nearest kept "
+              "point is farther than this many times the median such distance is an outlier "
+              "(0: off; paper preset: off)");
+DEFINE_int32(isolation_neighbors, 40, "the neighbour rank of --isolation_factor's test");
 DEFINE_bool(snap_features, false,
             "feature improvement (Sec. 3.4): move feature points onto the intersection line "
             "of the two DBSCAN clusters of their neighbours' planes t_j");

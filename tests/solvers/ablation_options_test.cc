@@ -148,6 +148,7 @@ TEST(AblationOptions, ContinuationFollowsItsGeometricSchedule) {
   options.minimizer.gnc.stage_iterations = 2;
   options.minimizer.max_iterations = 40;
   options.minimizer.energy_tolerance = 0.0;
+  options.minimizer.progress_tolerance = 0.0;
   DenoiseState state = StartDenoising(points, options);
   const SolverSummary summary = MinimizeFromState(options, &state);
   const energy::EnergyParameters& target = options.settings.energy;

@@ -38,6 +38,7 @@ AlternatingMinimizer::Options TightOptions() {
   AlternatingMinimizer::Options options;
   options.max_iterations = 6;
   options.energy_tolerance = 0.0;
+  options.progress_tolerance = 0.0;
   options.linear_solver.relative_tolerance = 1e-12;
   return options;
 }
@@ -86,6 +87,33 @@ TEST(AlternatingMinimizer, StopsOnTheEnergyWindowAndOnTheCallback) {
       problem, {}, options, &v, [](const IterationRecord& r) { return r.iteration < 2; });
   EXPECT_EQ(summary.termination, TerminationType::kUserAbort);
   EXPECT_EQ(summary.num_iterations, 2);
+}
+
+// The progress rule, checked on the recorded energies: the run stops at the first t (counted
+// from 1) with E_{t-3} - E_t <= tol (E_1 - E_t), and only the progress test is on.
+TEST(AlternatingMinimizer, StopsWhenTheLastIterationsGainLittleAgainstTheWholeRun) {
+  const energy::Problem problem = PlaneProblem(300, 0.01, 3, 8);
+  AlternatingMinimizer::Options options;
+  options.max_iterations = 50;
+  options.energy_tolerance = 0.0;
+  options.progress_tolerance = 0.05;
+  energy::Variables v = energy::InitialVariables(problem);
+  const SolverSummary summary = AlternatingMinimizer::Minimize(
+      problem, Fixed(testing::BalancedParameters()), options, &v);
+  ASSERT_EQ(summary.termination, TerminationType::kConvergence) << summary.message;
+  std::vector<double> e;
+  for (const IterationRecord& record : summary.iterations) e.push_back(record.energy.total());
+  const size_t w = options.energy_window;
+  ASSERT_GT(e.size(), w + 2) << "stopped too early to tell the rule apart";
+  auto met = [&](size_t t) { return e[t - w] - e[t] <= options.progress_tolerance * (e[0] - e[t]); };
+  EXPECT_TRUE(met(e.size() - 1));
+  for (size_t t = w; t + 1 < e.size(); ++t) EXPECT_FALSE(met(t)) << "iteration " << t + 1;
+  EXPECT_NE(summary.message.find("fall since the first"), std::string::npos);
+
+  options.progress_tolerance = -1.0;
+  std::string error;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("progress_tolerance"), std::string::npos);
 }
 
 TEST(AlternatingMinimizer, InvalidOptionsFailWithoutWork) {
