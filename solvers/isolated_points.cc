@@ -9,6 +9,16 @@
 #include "energy/spatial_order.h"
 
 namespace lpd::solvers {
+namespace {
+
+// The median of `values` (the upper one for an even count); reorders a copy.
+double Median(std::vector<double> values) {
+  const auto middle = values.begin() + values.size() / 2;
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+}  // namespace
 
 bool IsolationOptions::IsValid(std::string* error) const {
   std::ostringstream out;
@@ -66,10 +76,27 @@ std::vector<uint8_t> FlagIsolatedPoints(const energy::PointList& points,
       squared_radius[r] = squared_distances[m];
     }
   }
-  std::vector<double> sorted = squared_radius;
-  std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
-  const double limit = options.radius_factor * options.radius_factor * sorted[n / 2];
-  for (int r = 0; r < n; ++r) isolated[rows[r]] = squared_radius[r] > limit;
+  const double squared_factor = options.radius_factor * options.radius_factor;
+  const double global_limit = squared_factor * Median(squared_radius);
+  std::vector<int> candidates;
+  for (int r = 0; r < n; ++r) {
+    if (squared_radius[r] > global_limit) candidates.push_back(r);
+  }
+  // The candidates' own neighbourhoods: a region sampled more sparsely than the rest has
+  // neighbours as far apart as its points, a point off the surface has not.
+  const int count = static_cast<int>(candidates.size());
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<int> nearest(m + 1);
+    std::vector<double> squared_distances(m + 1), neighbor_radius(m);
+#pragma omp for schedule(dynamic, 64)
+    for (int c = 0; c < count; ++c) {
+      const int r = candidates[c];
+      tree.knnSearch(kept_points[r].data(), m + 1, nearest.data(), squared_distances.data());
+      for (int a = 1; a <= m; ++a) neighbor_radius[a - 1] = squared_radius[nearest[a]];
+      isolated[rows[r]] = squared_radius[r] > squared_factor * Median(neighbor_radius);
+    }
+  }
   return isolated;
 }
 
