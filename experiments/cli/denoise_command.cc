@@ -30,7 +30,8 @@ DEFINE_string(resume, "",
               "continue the run saved in this file instead of reading INPUT: no k-NN search, "
               "the saved parameters unless flags are given (not k or initialization), "
               "--max_iters more iterations; with the saved thread count the result is the "
-              "same bit for bit as one uninterrupted run; also --resume=FILE");
+              "same bit for bit as one uninterrupted run; no second outlier pass or "
+              "isolation test (they need the input); also --resume=FILE");
 DEFINE_bool(quiet, false, "do not print per-iteration progress");
 DEFINE_bool(trace, false, "print the energy per term after every block update at the end");
 DEFINE_uint64(seed, 1, "random seed of generated samples (and, plus one, of their noise)");
