@@ -16,7 +16,10 @@ constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
 // 2: the saved parameters include the data-derived rules (k = auto, fit and smoothing
 // balance, projection, passes). A version-1 state lacks them and would resume under other
 // weights than it was written with, so it is refused.
-constexpr uint32_t kVersion = 3;
+// 4: the saved parameters include the progress test (progress_tolerance). A version-3 state
+// was written before it existed and resumes with it off, as it would have run then.
+constexpr uint32_t kVersion = 4;
+constexpr uint32_t kOldestVersion = 3;
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 
 class Writer {
@@ -154,15 +157,16 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   in.Array(magic, sizeof(magic));
   if (std::memcmp(magic, kMagic, sizeof(kMagic)) != 0) in.Fail("not an lpd state file");
   const uint32_t version = in.Value<uint32_t>();
-  if (version != kVersion) {
-    in.Fail("state file version " + std::to_string(version) + ", this lpd reads version " +
-            std::to_string(kVersion));
+  if (version < kOldestVersion || version > kVersion) {
+    in.Fail("state file version " + std::to_string(version) + ", this lpd reads versions " +
+            std::to_string(kOldestVersion) + "-" + std::to_string(kVersion));
   }
   if (in.Value<uint32_t>() != kByteOrderMark) {
     in.Fail("state file written on a machine of the other byte order");
   }
   SavedDenoiseRun run;
   run.num_threads = in.Value<int32_t>();
+  if (version == 3) run.parameters.emplace_back("progress_tolerance", "0");
   const uint32_t num_parameters = in.Value<uint32_t>();
   for (uint32_t p = 0; p < num_parameters; ++p) {
     std::string name = in.Text();

@@ -111,6 +111,26 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
       EXPECT_NE(std::string(error.what()).find(reason), std::string::npos) << error.what();
     }
   };
+  // The version is the 4 bytes after the 8-byte magic. A version-3 state (from before the
+  // progress test) resumes with the test off; versions outside 3-4 are refused.
+  auto set_version = [&](uint32_t version) {
+    std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+    file.seekp(8);
+    file.write(reinterpret_cast<const char*>(&version), sizeof(version));
+  };
+  set_version(3);
+  {
+    const SavedDenoiseRun old = ReadDenoiseState(path);
+    solvers::DenoiseOptions resumed;
+    ASSERT_FALSE(old.parameters.empty());
+    EXPECT_EQ(old.parameters.front().first, "progress_tolerance");
+    SetDenoiseParameter(old.parameters.front().first, old.parameters.front().second, &resumed);
+    EXPECT_EQ(resumed.minimizer.progress_tolerance, 0.0);
+  }
+  set_version(5);
+  expect_rejected("state file version 5");
+  set_version(4);
+  EXPECT_NE(ReadDenoiseState(path).parameters.front().first, "progress_tolerance");
   std::filesystem::resize_file(path, size / 2);
   expect_rejected("truncated");
   {
