@@ -60,7 +60,10 @@ code=$?
 echo "interrupted: exit $code: $(tail -1 "$dir/stderr")"
 
 if command -v mpirun >/dev/null; then
-  mpi=(timeout 300 mpirun --oversubscribe -np 2)
+  # Under --sanitize, Open MPI's runtime leaks at exit from plugins it has unloaded, which
+  # LeakSanitizer cannot name or suppress; the one-process cases above check lpd's own code.
+  mpi=(env ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" timeout 300 mpirun --oversubscribe
+       -np 2)
   cases=$((cases + 1))
   "${mpi[@]}" "$lpd" denoise "$dir/cloud.xyz" -o "$dir/two.xyz" --tile_points=1500 --quiet \
     >"$dir/stdout" 2>"$dir/stderr" || fail "2 ranks: $(tail -3 "$dir/stderr")"
