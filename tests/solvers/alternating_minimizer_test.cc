@@ -105,7 +105,9 @@ TEST(AlternatingMinimizer, StopsWhenTheLastIterationsGainLittleAgainstTheWholeRu
   for (const IterationRecord& record : summary.iterations) e.push_back(record.energy.total());
   const size_t w = options.energy_window;
   ASSERT_GT(e.size(), w + 2) << "stopped too early to tell the rule apart";
-  auto met = [&](size_t t) { return e[t - w] - e[t] <= options.progress_tolerance * (e[0] - e[t]); };
+  auto met = [&](size_t t) {
+    return e[t - w] - e[t] <= options.progress_tolerance * (e[0] - e[t]);
+  };
   EXPECT_TRUE(met(e.size() - 1));
   for (size_t t = w; t + 1 < e.size(); ++t) EXPECT_FALSE(met(t)) << "iteration " << t + 1;
   EXPECT_NE(summary.message.find("fall since the first"), std::string::npos);

@@ -100,7 +100,9 @@ TEST(FlagIsolatedPoints, ARegionSampledTenTimesSparserKeepsItsPoints) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   energy::PointList points;
-  for (int i = 0; i < 14400; ++i) points.emplace_back(30.0 * unit(random), 60.0 * unit(random), 0.0);
+  for (int i = 0; i < 14400; ++i) {
+    points.emplace_back(30.0 * unit(random), 60.0 * unit(random), 0.0);
+  }
   for (int i = 0; i < 1440; ++i) {
     points.emplace_back(30.0 + 30.0 * unit(random), 60.0 * unit(random), 0.0);
   }
