@@ -1,24 +1,14 @@
 #include "solvers/isolated_points.h"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "energy/normalization.h"
 #include "energy/point_kd_tree.h"
 #include "energy/spatial_order.h"
+#include "solvers/median.h"
 
 namespace lpd::solvers {
-namespace {
-
-// The median of `values` (the upper one for an even count); reorders a copy.
-double Median(std::vector<double> values) {
-  const auto middle = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
-
-}  // namespace
 
 bool IsolationOptions::IsValid(std::string* error) const {
   std::ostringstream out;
@@ -77,7 +67,8 @@ std::vector<uint8_t> FlagIsolatedPoints(const energy::PointList& points,
     }
   }
   const double squared_factor = options.radius_factor * options.radius_factor;
-  const double global_limit = squared_factor * Median(squared_radius);
+  std::vector<double> radii_to_reorder = squared_radius;
+  const double global_limit = squared_factor * Median(&radii_to_reorder);
   std::vector<int> candidates;
   for (int r = 0; r < n; ++r) {
     if (squared_radius[r] > global_limit) candidates.push_back(r);
@@ -94,7 +85,7 @@ std::vector<uint8_t> FlagIsolatedPoints(const energy::PointList& points,
       const int r = candidates[c];
       tree.knnSearch(kept_points[r].data(), m + 1, nearest.data(), squared_distances.data());
       for (int a = 1; a <= m; ++a) neighbor_radius[a - 1] = squared_radius[nearest[a]];
-      isolated[rows[r]] = squared_radius[r] > squared_factor * Median(neighbor_radius);
+      isolated[rows[r]] = squared_radius[r] > squared_factor * Median(&neighbor_radius);
     }
   }
   return isolated;

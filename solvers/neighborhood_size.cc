@@ -12,6 +12,7 @@
 
 #include "energy/normalization.h"
 #include "energy/point_kd_tree.h"
+#include "solvers/median.h"
 
 namespace lpd::solvers {
 
@@ -39,13 +40,6 @@ namespace {
 
 // At most this many probe neighbourhoods: their medians are then stable to about 0.5%.
 constexpr int kMaxProbeQueries = 1 << 17;
-
-// The median of `values` (reordered).
-double Median(std::vector<double>* values) {
-  const auto middle = values->begin() + values->size() / 2;
-  std::nth_element(values->begin(), middle, values->end());
-  return *middle;
-}
 
 }  // namespace
 
