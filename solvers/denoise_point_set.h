@@ -114,8 +114,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
 // removed more than rerun_removed_fraction of its points, the points it kept are denoised
 // again from their input coordinates `points` and their results replace the earlier ones.
 // Removed points keep the values of the pass that removed them. Then the kept points that
-// are isolated among the kept input points (options.final_step.isolation) are removed too. `callback` sees every pass;
-// `normals` (input order) are those of StartDenoising.
+// are isolated among the kept input points (options.final_step.isolation) are removed too.
+// `callback` sees every pass; `normals` (input order) are those of StartDenoising.
 DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
                                    DenoiseResult first,
                                    const IterationCallback& callback = nullptr,

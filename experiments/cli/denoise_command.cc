@@ -209,8 +209,8 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
       "points in %zu, out %zu, outliers flagged %d (%d isolated), removed %d, feature points "
       "%d, iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
       num_input_points, num_output_points, result.num_outliers, result.num_isolated,
-      result.num_removed, result.num_features, result.summary.num_iterations, result.passes, result.total_seconds,
-      result.setup_seconds);
+      result.num_removed, result.num_features, result.summary.num_iterations, result.passes,
+      result.total_seconds, result.setup_seconds);
   std::string chosen;
   if (result.neighborhood.spacing > 0.0) {
     char text[160];

@@ -120,8 +120,8 @@ DEFINE_double(outlier_rerun_fraction, 0.05,
               "share of removed points above which another pass runs");
 DEFINE_double(isolation_factor, 3.0,
               "after the passes, a kept point whose --isolation_neighbors-th nearest kept "
-              "point is farther than this many times the median such distance is an outlier "
-              "(0: off; paper preset: off)");
+              "point is farther than this many times the median such distance, over all kept "
+              "points and over its own neighbours, is an outlier (0: off; paper preset: off)");
 DEFINE_int32(isolation_neighbors, 40, "the neighbour rank of --isolation_factor's test");
 DEFINE_bool(snap_features, false,
             "feature improvement (Sec. 3.4): move feature points onto the intersection line "
