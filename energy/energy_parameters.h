@@ -1,5 +1,5 @@
 // lpd: the scalar weights of the energy of Eq. (5), with the paper's values (Table 2) except
-// mu_m; solvers/presets.h has the paper's setting whole and the data-derived default.
+// mu_m; lpd/presets.h has the paper's setting whole and the data-derived default.
 #ifndef LPD_ENERGY_ENERGY_PARAMETERS_H_
 #define LPD_ENERGY_ENERGY_PARAMETERS_H_
 

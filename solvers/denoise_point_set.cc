@@ -237,6 +237,13 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   return result;
 }
 
+namespace {
+
+bool StoppedByCallback(const DenoiseResult& result) {
+  return result.summary.termination == TerminationType::kUserAbort;
+}
+
+// The passes after `first` and the isolation test (DenoisePointSet).
 DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
                                    DenoiseResult first, const IterationCallback& callback,
                                    const energy::PointList* normals) {
@@ -246,6 +253,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
   for (size_t i = 0; i < points.size(); ++i) last_rows[i] = static_cast<int>(i);
   int removed_by_last = result.num_removed;
   for (int pass = 2; pass <= options.final_step.outlier_passes; ++pass) {
+    if (StoppedByCallback(result)) break;
     if (removed_by_last <= options.final_step.rerun_removed_fraction * last_rows.size()) break;
     std::vector<int> rows;
     energy::PointList kept_points, kept_normals;
@@ -280,7 +288,8 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     removed_by_last = next.num_removed;
     last_rows = std::move(rows);
   }
-  if (options.final_step.remove_outliers && result.removal_note.empty()) {
+  if (options.final_step.remove_outliers && result.removal_note.empty() &&
+      !StoppedByCallback(result)) {
     const std::vector<uint8_t> isolated = FlagIsolatedPoints(
         points, result.kept, options.final_step.isolation, options.settings.num_threads);
     for (size_t i = 0; i < points.size(); ++i) {
@@ -300,14 +309,28 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
   return result;
 }
 
+}  // namespace
+
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
-                              const IterationCallback& callback,
-                              const energy::PointList* normals) {
+                              const DenoiseHooks& hooks, const energy::PointList* normals) {
   const Clock::time_point start = Clock::now();
   DenoiseState state = StartDenoising(points, options, normals);
-  SolverSummary summary = MinimizeFromState(options, &state, callback);
-  DenoiseResult result = RerunWithoutOutliers(
-      points, options, FinishDenoising(state, options, std::move(summary)), callback, normals);
+  if (hooks.on_started) hooks.on_started(state);
+  SolverSummary summary = MinimizeFromState(options, &state, hooks.progress);
+  if (hooks.on_minimized) hooks.on_minimized(state);
+  DenoiseResult result =
+      RerunWithoutOutliers(points, options, FinishDenoising(state, options, std::move(summary)),
+                           hooks.progress, normals);
+  result.total_seconds = SecondsSince(start);
+  return result;
+}
+
+DenoiseResult ContinueDenoising(DenoiseState state, const DenoiseOptions& options,
+                                const DenoiseHooks& hooks) {
+  const Clock::time_point start = Clock::now();
+  SolverSummary summary = MinimizeFromState(options, &state, hooks.progress);
+  if (hooks.on_minimized) hooks.on_minimized(state);
+  DenoiseResult result = FinishDenoising(state, options, std::move(summary));
   result.total_seconds = SecondsSince(start);
   return result;
 }

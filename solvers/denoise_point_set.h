@@ -2,12 +2,13 @@
 //
 // Builds the problem (normalization, N, M, alpha, beta), minimizes Eq. (5) with Alg. 1 (or
 // with the Ceres joint solve, the validation solver), then runs the final denoising of
-// Sec. 3.4. Inputs are never modified. The three stages are also callable one by one, so that a run can be saved
-// between them and continued later (warm restart, Sec. 4.1).
+// Sec. 3.4. Inputs are never modified. DenoisePointSet sequences the stages; they are also
+// callable one by one, for tests and ablations that look between them.
 #ifndef LPD_SOLVERS_DENOISE_POINT_SET_H_
 #define LPD_SOLVERS_DENOISE_POINT_SET_H_
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -110,21 +111,35 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
 DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& options,
                               SolverSummary summary);
 
-// Further passes after `first` (options.final_step.outlier_passes): while the last pass
-// removed more than rerun_removed_fraction of its points, the points it kept are denoised
-// again from their input coordinates `points` and their results replace the earlier ones.
-// Removed points keep the values of the pass that removed them. Then the kept points that
-// are isolated among the kept input points (options.final_step.isolation) are removed too.
-// `callback` sees every pass; `normals` (input order) are those of StartDenoising.
-DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const DenoiseOptions& options,
-                                   DenoiseResult first,
-                                   const IterationCallback& callback = nullptr,
-                                   const energy::PointList* normals = nullptr);
+// What a caller of DenoisePointSet sees of the run, or adds to it, between the stages.
+struct DenoiseHooks {
+  // After every iteration of every pass; returning false stops the run (the minimization
+  // ends with USER_ABORT, no further pass starts, no isolation test runs).
+  IterationCallback progress;
+  // After the first pass's StartDenoising (e.g. to measure the problem) and after its
+  // minimization (e.g. to save the state for a warm restart). An exception thrown here ends
+  // the run.
+  std::function<void(const DenoiseState&)> on_started;
+  std::function<void(const DenoiseState&)> on_minimized;
+};
 
-// The three stages in a row, then RerunWithoutOutliers.
+// The pipeline, sequenced here only: StartDenoising, MinimizeFromState, FinishDenoising,
+// then further passes without the outliers (options.final_step.outlier_passes: while the
+// last pass removed more than rerun_removed_fraction of its points, the points it kept are
+// denoised again from their input coordinates, and their results replace the earlier ones;
+// removed points keep the values of the pass that removed them), then the isolation test on
+// the kept input points (options.final_step.isolation). `normals` (input order) are needed by
+// initialization input_normals only. Throws std::invalid_argument with a one-line reason on
+// invalid options or input, std::runtime_error if the solver failed.
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
-                              const IterationCallback& callback = nullptr,
+                              const DenoiseHooks& hooks = {},
                               const energy::PointList* normals = nullptr);
+
+// Continues a saved run (a warm restart, Sec. 4.1): MinimizeFromState from `state`, then
+// FinishDenoising. No further pass and no isolation test: they need the input points, which
+// a state does not keep.
+DenoiseResult ContinueDenoising(DenoiseState state, const DenoiseOptions& options,
+                                const DenoiseHooks& hooks = {});
 
 }  // namespace lpd::solvers
 

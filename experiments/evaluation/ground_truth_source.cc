@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "experiments/io/point_cloud_io.h"
+#include "io/point_cloud_io.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "experiments/shapes/triangle_mesh.h"
 
@@ -36,12 +36,12 @@ GroundTruth LoadGroundTruth(const std::string& source, int num_samples, uint64_t
         MakeShape(ParseShapeSpec(source.substr(6))));
     return ShapeGroundTruth(shape, num_samples, seed);
   }
-  const std::string extension = FileExtension(source);
+  const std::string extension = io::FileExtension(source);
   if (extension == "off" || extension == "obj" || extension == "stl" ||
       (extension == "ply" && PlyHasFaces(source))) {
     return MeshGroundTruth(ReadTriangleMesh(source), source, num_samples, seed);
   }
-  return PointSetGroundTruth(ReadPoints(source), source + " (clean point set)");
+  return PointSetGroundTruth(io::ReadPoints(source), source + " (clean point set)");
 }
 
 }  // namespace lpd::experiments

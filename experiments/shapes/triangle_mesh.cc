@@ -4,15 +4,15 @@
 #include <random>
 #include <stdexcept>
 
-#include "experiments/io/atomic_output_file.h"
-#include "experiments/io/point_cloud_io.h"
+#include "io/atomic_output_file.h"
+#include "io/point_cloud_io.h"
 
 namespace lpd::experiments {
 
 using energy::Point3;
 
 void CheckTriangleMeshPath(const std::string& path) {
-  const std::string extension = FileExtension(path);
+  const std::string extension = io::FileExtension(path);
   if (extension != "off" && extension != "ply") {
     throw std::runtime_error("cannot write '" + path +
                              "': the mesh extension must be .off or .ply");
@@ -21,8 +21,8 @@ void CheckTriangleMeshPath(const std::string& path) {
 
 void WriteTriangleMesh(const std::string& path, const TriangleMesh& mesh, bool overwrite) {
   CheckTriangleMeshPath(path);
-  const std::string extension = FileExtension(path);
-  AtomicOutputFile file(path, overwrite);
+  const std::string extension = io::FileExtension(path);
+  io::AtomicOutputFile file(path, overwrite);
   std::ofstream& out = file.stream();
   out.precision(std::numeric_limits<double>::max_digits10);
   if (extension == "off") {

@@ -22,7 +22,7 @@ struct TriangleMesh {
 // faces. Implemented with CGAL in its own translation unit (mesh_io.cc).
 TriangleMesh ReadTriangleMesh(const std::string& path);
 
-// Writes OFF or ASCII PLY, chosen by the extension (.off, .ply), through AtomicOutputFile:
+// Writes OFF or ASCII PLY, chosen by the extension (.off, .ply), through io::AtomicOutputFile:
 // the file appears only complete, and an existing file is refused unless `overwrite`.
 // Throws std::runtime_error on another extension or a write error.
 void WriteTriangleMesh(const std::string& path, const TriangleMesh& mesh, bool overwrite);

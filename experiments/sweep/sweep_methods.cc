@@ -6,11 +6,11 @@
 #include <stdexcept>
 
 #include "experiments/baselines/cgal_baselines.h"
-#include "experiments/io/interruption.h"
-#include "experiments/sweep/denoise_parameters.h"
+#include "io/interruption.h"
+#include "lpd/parameters.h"
 #include "experiments/sweep/method_parameters.h"
 #include "solvers/denoise_point_set.h"
-#include "solvers/presets.h"
+#include "lpd/presets.h"
 
 namespace lpd::experiments {
 namespace {
@@ -28,14 +28,14 @@ bool DenoiseSolver(const std::string& method, solvers::Solver* solver) {
 }
 
 solvers::DenoiseOptions DenoiseOptionsOf(const MethodConfig& method, solvers::Solver solver) {
-  solvers::Preset preset = solvers::Preset::kDefault;
+  Preset preset = Preset::kDefault;
   for (const auto& [name, value] : method.parameters) {
-    if (name == "preset" && !solvers::ParsePreset(value.text, &preset)) {
+    if (name == "preset" && !ParsePreset(value.text, &preset)) {
       throw std::invalid_argument("preset of method " + method.method +
                                   " must be default or paper, got '" + value.text + "'");
     }
   }
-  solvers::DenoiseOptions options = solvers::PresetOptions(preset);
+  solvers::DenoiseOptions options = PresetOptions(preset);
   options.solver = solver;
   const std::vector<std::string>& known = DenoiseParameterNames();
   for (const auto& [name, value] : method.parameters) {
@@ -59,9 +59,10 @@ MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,
   solvers::DenoiseOptions options = DenoiseOptionsOf(method, solver);
   options.settings.num_threads = num_threads;
   options.minimizer.trace_blocks = false;
-  const solvers::DenoiseResult result = solvers::DenoisePointSet(
-      input, options, [](const solvers::IterationRecord&) { return !InterruptionRequested(); });
-  ThrowIfInterrupted();  // a run stopped by a signal is no result
+  solvers::DenoiseHooks hooks;
+  hooks.progress = [](const solvers::IterationRecord&) { return !io::InterruptionRequested(); };
+  const solvers::DenoiseResult result = solvers::DenoisePointSet(input, options, hooks);
+  io::ThrowIfInterrupted();  // a run stopped by a signal is no result
   MethodRun run;
   for (size_t i = 0; i < input.size(); ++i) {
     if (result.kept[i]) run.output.push_back(result.projected[i]);

@@ -9,7 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "experiments/io/atomic_output_file.h"
+#include "io/atomic_output_file.h"
 
 namespace lpd::experiments {
 namespace {
@@ -142,7 +142,7 @@ void ResultStore::Append(const ResultRecord& record) {
 }
 
 void ResultStore::WriteCsv() const {
-  AtomicOutputFile file(csv_path(), /*overwrite=*/true);
+  io::AtomicOutputFile file(csv_path(), /*overwrite=*/true);
   std::ofstream& out = file.stream();
   for (size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << columns_[c];
   out << "\n";

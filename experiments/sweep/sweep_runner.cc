@@ -14,9 +14,9 @@
 #include "experiments/baselines/surface_reconstruction.h"
 #include "experiments/evaluation/ground_truth_source.h"
 #include "experiments/evaluation/metrics.h"
-#include "experiments/io/interruption.h"
-#include "experiments/io/machine_info.h"
-#include "experiments/io/point_cloud_io.h"
+#include "io/interruption.h"
+#include "io/machine_info.h"
+#include "io/point_cloud_io.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "experiments/shapes/triangle_mesh.h"
 #include "experiments/sweep/sweep_methods.h"
@@ -57,7 +57,7 @@ LoadedDataset LoadDataset(const DatasetConfig& dataset, const SweepConfig& confi
     loaded.truth = std::make_unique<GroundTruth>(
         MeshGroundTruth(*loaded.mesh, dataset.mesh, config.ground_truth_samples));
   } else {
-    loaded.file_points = ReadPoints(dataset.file);
+    loaded.file_points = io::ReadPoints(dataset.file);
     if (!dataset.ground_truth.empty()) {
       loaded.truth = std::make_unique<GroundTruth>(
           LoadGroundTruth(dataset.ground_truth, config.ground_truth_samples));
@@ -136,16 +136,16 @@ void SaveClouds(const std::string& directory, const std::string& cell_id,
   const std::string clouds = directory + "/clouds";
   std::filesystem::create_directories(clouds);
   auto as_float = [](const auto& values) { return std::vector<float>(values.begin(), values.end()); };
-  PointCloud noisy;
+  io::PointCloud noisy;
   noisy.points = input.points;
   if (!run.outlier_flags.empty()) noisy.scalars.emplace_back("outlier", as_float(run.outlier_flags));
   if (!run.feature_flags.empty()) noisy.scalars.emplace_back("feature", as_float(run.feature_flags));
   if (!input.is_outlier.empty()) noisy.scalars.emplace_back("true_outlier", as_float(input.is_outlier));
-  WritePointCloud(clouds + "/" + cell_id + "_input.ply", noisy, /*overwrite=*/true);
-  PointCloud output;
+  io::WritePointCloud(clouds + "/" + cell_id + "_input.ply", noisy, /*overwrite=*/true);
+  io::PointCloud output;
   output.points = run.output;
   if (!distances.empty()) output.scalars.emplace_back("distance", as_float(distances));
-  WritePointCloud(clouds + "/" + cell_id + "_output.ply", output, /*overwrite=*/true);
+  io::WritePointCloud(clouds + "/" + cell_id + "_output.ply", output, /*overwrite=*/true);
 }
 
 // Reconstructs the cell's output with every method of `config.reconstructions` and records
@@ -370,11 +370,11 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
   const int threads = config.threads_per_cell > 0
                           ? config.threads_per_cell
                           : std::max(1, options.num_threads / workers);
-  const std::string machine = MachineDescription();
+  const std::string machine = io::MachineDescription();
   std::atomic<size_t> next{0};
   std::atomic<int> run_count{0}, failed{0};
   const auto work = [&]() {
-    for (size_t p = next++; p < pending.size() && !InterruptionRequested(); p = next++) {
+    for (size_t p = next++; p < pending.size() && !io::InterruptionRequested(); p = next++) {
       const SweepCell& cell = *pending[p];
       try {
         const ResultRecord record =
@@ -383,7 +383,7 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
         const int done = ++run_count;
         report("[" + std::to_string(done) + "/" + std::to_string(pending.size()) + "] " +
                Brief(record));
-      } catch (const Interrupted&) {
+      } catch (const io::Interrupted&) {
         return;  // the cell is left to the next run
       } catch (const std::exception& error) {
         ++failed;
@@ -395,7 +395,7 @@ SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& optio
   for (int w = 1; w < workers; ++w) pool.emplace_back(work);
   work();
   for (std::thread& thread : pool) thread.join();
-  ThrowIfInterrupted();
+  io::ThrowIfInterrupted();
   summary.num_run = run_count;
   summary.num_failed = failed;
   summary.seconds =

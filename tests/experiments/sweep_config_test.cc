@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "experiments/io/point_cloud_io.h"
+#include "io/point_cloud_io.h"
 #include "experiments/sweep/sweep_results.h"
 #include "experiments/sweep/sweep_runner.h"
 
@@ -72,7 +72,7 @@ TEST(SweepConfig, ErrorsNameTheLineAndTheKey) {
   const std::string base = "datasets:\n  - shape: cube\nmethods:\n  - method: lpd\n";
   EXPECT_NE(LoadError(base + "    kk: 3\n").find(":5: unknown parameter 'kk' of method lpd"),
             std::string::npos);
-  EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: parameter k: 'x' is neither an integer nor auto"),
+  EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: parameter k: 'x' is not an integer or auto"),
             std::string::npos);
   EXPECT_NE(LoadError("datasets:\n  - shape: teapot\nmethods:\n  - method: none\n")
                 .find(":2: unknown shape 'teapot'"),
@@ -179,7 +179,7 @@ noise:
     const std::string name = entry.path().filename().string();
     if (name.size() < 11 || name.substr(name.size() - 11) != "_output.ply") continue;
     ++outputs;
-    const PointCloud cloud = ReadPointCloud(entry.path().string());
+    const io::PointCloud cloud = io::ReadPointCloud(entry.path().string());
     ASSERT_EQ(cloud.scalars.size(), 1u) << name;
     ASSERT_EQ(cloud.scalars[0].first, "distance");
     ASSERT_EQ(cloud.scalars[0].second.size(), cloud.points.size());

@@ -9,13 +9,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "experiments/io/point_cloud_io.h"
+#include "io/point_cloud_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
   try {
-    const lpd::experiments::PointCloud cloud =
-        lpd::experiments::ReadPointCloud(in, LPD_FUZZ_FORMAT, "fuzz-input");
+    const lpd::io::PointCloud cloud =
+        lpd::io::ReadPointCloud(in, LPD_FUZZ_FORMAT, "fuzz-input");
     for (const auto& p : cloud.points) {
       if (!p.allFinite()) std::abort();
     }

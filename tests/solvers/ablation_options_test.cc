@@ -7,7 +7,7 @@
 #include "experiments/shapes/noise.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "solvers/denoise_point_set.h"
-#include "solvers/presets.h"
+#include "lpd/presets.h"
 #include "solvers/residual_statistics.h"
 #include "test_problems.h"
 

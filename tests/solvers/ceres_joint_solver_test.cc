@@ -2,7 +2,7 @@
 // keeps h_i on the sphere and lowers the energy, and on a noisy cube it is compared with the
 // alternating driver of Alg. 1 from the same start.
 #include "solvers/ceres_joint_solver.h"
-#include "solvers/presets.h"
+#include "lpd/presets.h"
 #include "solvers/sphere_projection.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
-// The default method (solvers/presets.h) minimizes an energy whose weights come from the
+// The default method (lpd/presets.h) minimizes an energy whose weights come from the
 // data: it converges before max_iters, more iterations do not make it worse, and the same
 // cloud at another scale gives the same result.
-#include "solvers/presets.h"
+#include "lpd/presets.h"
 
 #include <iterator>
 

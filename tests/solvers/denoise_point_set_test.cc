@@ -10,7 +10,7 @@
 #include "energy/normalization.h"
 #include "experiments/shapes/noise.h"
 #include "experiments/shapes/shape_catalog.h"
-#include "solvers/presets.h"
+#include "lpd/presets.h"
 #include "test_problems.h"
 
 namespace lpd::solvers {

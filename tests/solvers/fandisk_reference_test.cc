@@ -10,7 +10,7 @@
 
 #include "energy/normalization.h"
 #include "experiments/evaluation/mesh_distance.h"
-#include "experiments/io/point_cloud_io.h"
+#include "io/point_cloud_io.h"
 #include "solvers/denoise_point_set.h"
 
 namespace lpd::solvers {
@@ -24,7 +24,7 @@ std::string DataDirectory() {
 double MeanDistanceOverDiagonal(const std::string& noise_label) {
   const std::string data = DataDirectory();
   const energy::PointList input =
-      experiments::ReadPoints(data + "/noisy/fandisk_noise_" + noise_label + ".xyz");
+      io::ReadPoints(data + "/noisy/fandisk_noise_" + noise_label + ".xyz");
   DenoiseOptions options;
   options.problem.k = 50;
   options.minimizer.max_iterations = 5;

@@ -9,7 +9,7 @@
 #include "experiments/shapes/noise.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "solvers/denoise_point_set.h"
-#include "solvers/presets.h"
+#include "lpd/presets.h"
 
 namespace lpd::solvers {
 namespace {

@@ -1,0 +1,237 @@
+#include "cli/denoise_state_file.h"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include "io/atomic_output_file.h"
+#include "lpd/parameters.h"
+
+namespace lpd::cli {
+namespace {
+
+constexpr char kMagic[8] = {'L', 'P', 'D', 'S', 'T', 'A', 'T', 'E'};
+constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
+// 2: the saved parameters include the data-derived rules (k = auto, fit and smoothing
+// balance, projection, passes). A version-1 state lacks them and would resume under other
+// weights than it was written with, so it is refused.
+// 4: the saved parameters include the progress test (progress_tolerance). A version-3 state
+// was written before it existed and resumes with it off, as it would have run then.
+constexpr uint32_t kVersion = 4;
+constexpr uint32_t kOldestVersion = 3;
+constexpr uint32_t kByteOrderMark = 0x01020304u;
+
+class Writer {
+ public:
+  explicit Writer(std::ostream& out) : out_(out) {}
+  template <typename T>
+  void Value(const T& value) {
+    out_.write(reinterpret_cast<const char*>(&value), sizeof(T));
+  }
+  template <typename T>
+  void Array(const T* values, size_t count) {
+    out_.write(reinterpret_cast<const char*>(values), sizeof(T) * count);
+  }
+  void Text(const std::string& text) {
+    Value(static_cast<uint32_t>(text.size()));
+    Array(text.data(), text.size());
+  }
+
+ private:
+  std::ostream& out_;
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+    if (!in_) Fail("cannot open file (missing or unreadable)");
+    in_.seekg(0, std::ios::end);
+    remaining_ = static_cast<uint64_t>(in_.tellg());
+    in_.seekg(0);
+  }
+  [[noreturn]] void Fail(const std::string& reason) const {
+    throw std::runtime_error(path_ + ": " + reason);
+  }
+  template <typename T>
+  T Value() {
+    T value;
+    Array(&value, 1);
+    return value;
+  }
+  template <typename T>
+  void Array(T* values, uint64_t count) {
+    // Checked against the file's size first, so a corrupt count cannot allocate or read
+    // past the end.
+    if (count > remaining_ / sizeof(T)) Fail("truncated state file");
+    in_.read(reinterpret_cast<char*>(values), sizeof(T) * count);
+    if (!in_) Fail("read error");
+    remaining_ -= sizeof(T) * count;
+  }
+  template <typename T>
+  void Vector(uint64_t count, std::vector<T>* values) {
+    if (count > remaining_ / sizeof(T)) Fail("truncated state file");
+    values->resize(count);
+    Array(values->data(), count);
+  }
+  std::string Text() {
+    std::vector<char> bytes;
+    Vector(Value<uint32_t>(), &bytes);
+    return std::string(bytes.begin(), bytes.end());
+  }
+  uint64_t remaining() const { return remaining_; }
+
+ private:
+  std::string path_;
+  std::ifstream in_;
+  uint64_t remaining_ = 0;
+};
+
+// `count` points of three native doubles.
+energy::PointList ReadPoints(int32_t count, Reader* in) {
+  std::vector<double> coordinates;
+  in->Vector(3 * static_cast<uint64_t>(count), &coordinates);
+  energy::PointList points(count);
+  for (int i = 0; i < count; ++i) {
+    points[i] = energy::Point3(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]);
+  }
+  return points;
+}
+
+}  // namespace
+
+void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& state,
+                       const solvers::DenoiseOptions& options, bool overwrite) {
+  const energy::Problem& problem = state.problem;
+  const energy::Variables& v = state.variables;
+  const solvers::MinimizerProgress& progress = state.progress;
+  io::AtomicOutputFile file(path, overwrite);
+  Writer out(file.stream());
+  out.Array(kMagic, sizeof(kMagic));
+  out.Value(kVersion);
+  out.Value(kByteOrderMark);
+  out.Value(static_cast<int32_t>(options.settings.num_threads));
+  std::vector<std::string> names;
+  for (const std::string& name : DenoiseParameterNames()) {
+    if (DenoiseParameterApplies(name, options.solver)) names.push_back(name);
+  }
+  out.Value(static_cast<uint32_t>(names.size()));
+  for (const std::string& name : names) {
+    out.Text(name);
+    out.Text(GetDenoiseParameter(name, options));
+  }
+  out.Array(problem.frame.center.data(), 3);
+  out.Value(problem.frame.scale);
+  out.Value(options.problem.min_squared_distance_ratio);
+  const int32_t n = problem.num_points();
+  const int32_t k = problem.k();
+  out.Value(n);
+  out.Value(k);
+  out.Array(state.order.data(), state.order.size());
+  for (const energy::Point3& p : problem.points) out.Array(p.data(), 3);
+  out.Value(static_cast<int32_t>(state.left_out.size()));
+  out.Array(state.left_out.data(), state.left_out.size());
+  for (const energy::Point3& p : state.left_out_points) out.Array(p.data(), 3);
+  out.Array(problem.graph.neighbors.data(), problem.graph.neighbors.size());
+  out.Array(v.h.data(), v.h.size());
+  out.Array(v.t.data(), v.t.size());
+  out.Array(v.l.data(), v.l.size());
+  out.Value(static_cast<int64_t>(v.m.size()));
+  out.Array(v.m.data(), v.m.size());
+  out.Array(v.s.data(), v.s.size());
+  out.Value(static_cast<int32_t>(progress.iterations));
+  out.Value(progress.mu_l);
+  out.Value(progress.gnc.mu_l.current);
+  out.Value(progress.gnc.mu_m.current);
+  out.Value(static_cast<int32_t>(progress.gnc.stage_iterations));
+  out.Value(static_cast<uint32_t>(progress.energy_history.size()));
+  out.Array(progress.energy_history.data(), progress.energy_history.size());
+  out.Array(kEndMark, sizeof(kEndMark));
+  file.Commit();
+}
+
+SavedDenoiseRun ReadDenoiseState(const std::string& path) {
+  Reader in(path);
+  char magic[sizeof(kMagic)];
+  if (in.remaining() < sizeof(magic)) in.Fail("not an lpd state file (too short)");
+  in.Array(magic, sizeof(magic));
+  if (std::memcmp(magic, kMagic, sizeof(kMagic)) != 0) in.Fail("not an lpd state file");
+  const uint32_t version = in.Value<uint32_t>();
+  if (version < kOldestVersion || version > kVersion) {
+    in.Fail("state file version " + std::to_string(version) + ", this lpd reads versions " +
+            std::to_string(kOldestVersion) + "-" + std::to_string(kVersion));
+  }
+  if (in.Value<uint32_t>() != kByteOrderMark) {
+    in.Fail("state file written on a machine of the other byte order");
+  }
+  SavedDenoiseRun run;
+  run.num_threads = in.Value<int32_t>();
+  if (version == 3) run.parameters.emplace_back("progress_tolerance", "0");
+  const uint32_t num_parameters = in.Value<uint32_t>();
+  for (uint32_t p = 0; p < num_parameters; ++p) {
+    std::string name = in.Text();
+    run.parameters.emplace_back(std::move(name), in.Text());
+  }
+
+  solvers::DenoiseState& state = run.state;
+  energy::Problem& problem = state.problem;
+  in.Array(problem.frame.center.data(), 3);
+  problem.frame.scale = in.Value<double>();
+  const double min_squared_distance_ratio = in.Value<double>();
+  const int32_t n = in.Value<int32_t>();
+  const int32_t k = in.Value<int32_t>();
+  if (n < 2 || k < 1 || k >= n) in.Fail("corrupt state file (point count or k)");
+  in.Vector(n, &state.order);
+  problem.points = ReadPoints(n, &in);
+  const int32_t num_left_out = in.Value<int32_t>();
+  if (num_left_out < 0) in.Fail("corrupt state file (left-out point count)");
+  in.Vector(num_left_out, &state.left_out);
+  state.left_out_points = ReadPoints(num_left_out, &in);
+  // Every input index once, over the solved and the left-out points.
+  const int64_t total = static_cast<int64_t>(n) + num_left_out;
+  std::vector<uint8_t> seen(total, 0);
+  for (const std::vector<int>* indices : {&state.order, &state.left_out}) {
+    for (int index : *indices) {
+      if (index < 0 || index >= total || seen[index]++) {
+        in.Fail("corrupt state file (input order)");
+      }
+    }
+  }
+  problem.graph.k = k;
+  in.Vector(static_cast<uint64_t>(n) * k, &problem.graph.neighbors);
+  for (int j : problem.graph.neighbors) {
+    if (j < 0 || j >= n) in.Fail("corrupt state file (neighbour index)");
+  }
+  energy::BuildPairs(&problem.graph);
+  energy::ComputeWeights(min_squared_distance_ratio, &problem);
+
+  energy::Variables& v = state.variables;
+  v.h.resize(n, 4);
+  v.t.resize(n, 4);
+  v.l.resize(n, k + 1);
+  in.Array(v.h.data(), v.h.size());
+  in.Array(v.t.data(), v.t.size());
+  in.Array(v.l.data(), v.l.size());
+  const int64_t num_pairs = in.Value<int64_t>();
+  if (num_pairs != problem.graph.num_pairs()) in.Fail("corrupt state file (pair count)");
+  v.m.resize(num_pairs);
+  v.s.resize(num_pairs);
+  in.Array(v.m.data(), v.m.size());
+  in.Array(v.s.data(), v.s.size());
+
+  solvers::MinimizerProgress& progress = state.progress;
+  progress.iterations = in.Value<int32_t>();
+  progress.mu_l = in.Value<double>();
+  progress.gnc.mu_l.current = in.Value<double>();
+  progress.gnc.mu_m.current = in.Value<double>();
+  progress.gnc.stage_iterations = in.Value<int32_t>();
+  in.Vector(in.Value<uint32_t>(), &progress.energy_history);
+  char end[sizeof(kEndMark)];
+  in.Array(end, sizeof(end));
+  if (std::memcmp(end, kEndMark, sizeof(kEndMark)) != 0 || in.remaining() != 0) {
+    in.Fail("corrupt state file (bad end mark)");
+  }
+  return run;
+}
+
+}  // namespace lpd::cli

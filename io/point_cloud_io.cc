@@ -1,0 +1,693 @@
+#include "io/point_cloud_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/atomic_output_file.h"
+
+namespace lpd::io {
+namespace {
+
+using energy::Point3;
+using energy::PointList;
+
+[[noreturn]] void Fail(const std::string& path, long line, const std::string& reason) {
+  if (line > 0) throw std::runtime_error(path + ":" + std::to_string(line) + ": " + reason);
+  throw std::runtime_error(path + ": " + reason);
+}
+
+// Moves `in` past a UTF-8 byte-order mark (which Windows editors write); UTF-16 text is
+// refused by name rather than as a malformed first line.
+void SkipByteOrderMark(const std::string& path, std::istream& in) {
+  char head[3] = {0, 0, 0};
+  in.read(head, 3);
+  const std::string start(head, static_cast<size_t>(in.gcount()));
+  in.clear();
+  if (start == "\xEF\xBB\xBF") return;
+  if (start.rfind("\xFF\xFE", 0) == 0 || start.rfind("\xFE\xFF", 0) == 0) {
+    Fail(path, 1, "UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
+  }
+  in.seekg(0);
+}
+
+// Longer lines are refused rather than buffered: a text file has short lines, and a device
+// or binary file read as text (/dev/zero, say) would otherwise fill the memory.
+constexpr size_t kMaxLineBytes = 1 << 16;
+
+// std::getline with that bound; `number` is the number of the line read.
+bool ReadLine(const std::string& path, std::istream& in, std::string* line, long number) {
+  line->clear();
+  std::streambuf* buffer = in.rdbuf();
+  for (;;) {
+    const int c = buffer->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      if (line->empty()) {
+        in.setstate(std::ios::eofbit | std::ios::failbit);
+        return false;
+      }
+      in.setstate(std::ios::eofbit);
+      return true;
+    }
+    if (c == '\n') return true;
+    if (line->size() == kMaxLineBytes) {
+      Fail(path, number, "line longer than " + std::to_string(kMaxLineBytes) +
+                             " bytes (not a text point file?)");
+    }
+    line->push_back(static_cast<char>(c));
+  }
+}
+
+// The start of `line` for a message, with unprintable bytes shown as '?'.
+std::string Excerpt(const std::string& line) {
+  std::string excerpt = line.substr(0, 60);
+  for (char& c : excerpt) {
+    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+  }
+  return excerpt;
+}
+
+// Parses the first three numbers of `text` into `p`; false if there are fewer than three.
+bool ParseThreeNumbers(const char* text, Point3* p, const char** rest = nullptr) {
+  const char* cursor = text;
+  for (int c = 0; c < 3; ++c) {
+    char* end = nullptr;
+    const double value = std::strtod(cursor, &end);
+    if (end == cursor) return false;
+    (*p)[c] = value;
+    cursor = end;
+  }
+  if (rest) *rest = cursor;
+  return true;
+}
+
+void CheckFinite(const std::string& path, long line, const Point3& p) {
+  if (!p.allFinite()) Fail(path, line, "non-finite coordinate (NaN or infinity)");
+}
+
+bool IsBlankOrComment(const std::string& line) {
+  for (char c : line) {
+    if (c == '#') return true;
+    if (!std::isspace(static_cast<unsigned char>(c))) return false;
+  }
+  return true;
+}
+
+constexpr char kNoPoints[] = "the file contains no points";
+
+// Calls visit(p, rest) for every point line of an XYZ file, `rest` pointing past x y z.
+template <class Visit>
+void VisitXyz(const std::string& path, std::istream& in, Visit visit) {
+  std::string line;
+  long number = 0;
+  while (ReadLine(path, in, &line, number + 1)) {
+    ++number;
+    if (IsBlankOrComment(line)) continue;
+    Point3 p;
+    const char* rest = nullptr;
+    if (!ParseThreeNumbers(line.c_str(), &p, &rest)) {
+      Fail(path, number, "expected three numbers 'x y z', got '" + Excerpt(line) + "'");
+    }
+    CheckFinite(path, number, p);
+    visit(p, rest);
+  }
+}
+
+// Columns 4-6 are read as normals when every line has them and they are unit vectors (as
+// "x y z nx ny nz" exports are); colours or other extra columns are ignored.
+PointCloud ReadXyz(const std::string& path, std::istream& in) {
+  PointCloud cloud;
+  bool normals_on_every_line = true;
+  VisitXyz(path, in, [&](const Point3& p, const char* rest) {
+    cloud.points.push_back(p);
+    if (!normals_on_every_line) return;
+    Point3 n;
+    normals_on_every_line =
+        ParseThreeNumbers(rest, &n) && n.allFinite() && std::abs(n.norm() - 1.0) < 0.01;
+    if (normals_on_every_line) cloud.normals.push_back(n);
+  });
+  if (!normals_on_every_line) cloud.normals.clear();
+  return cloud;
+}
+
+PointList ReadObj(const std::string& path, std::istream& in) {
+  PointList points;
+  std::string line;
+  long number = 0;
+  while (ReadLine(path, in, &line, number + 1)) {
+    ++number;
+    if (line.size() < 2 || line[0] != 'v' || !std::isspace(static_cast<unsigned char>(line[1]))) {
+      continue;
+    }
+    Point3 p;
+    if (!ParseThreeNumbers(line.c_str() + 1, &p)) Fail(path, number, "malformed vertex line");
+    CheckFinite(path, number, p);
+    points.push_back(p);
+  }
+  return points;
+}
+
+// Reads the next line that is not blank or a comment; false at end of file.
+bool NextContentLine(const std::string& path, std::istream& in, std::string* line,
+                     long* number) {
+  while (ReadLine(path, in, line, *number + 1)) {
+    ++*number;
+    if (!IsBlankOrComment(*line)) return true;
+  }
+  return false;
+}
+
+PointList ReadOff(const std::string& path, std::istream& in) {
+  std::string line;
+  long number = 0;
+  if (!NextContentLine(path, in, &line, &number)) Fail(path, 0, "empty file");
+  std::istringstream header(line);
+  std::string magic;
+  header >> magic;
+  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0) {
+    Fail(path, number, "not an OFF file (first token '" + magic + "')");
+  }
+  long num_vertices = -1;
+  if (!(header >> num_vertices)) {
+    if (!NextContentLine(path, in, &line, &number)) Fail(path, number, "missing vertex count");
+    std::istringstream counts(line);
+    counts >> num_vertices;
+  }
+  if (num_vertices < 0) Fail(path, number, "malformed vertex/face counts");
+  PointList points;
+  // The header's count is a claim, not a size to allocate (found by the OFF fuzzer: a count
+  // of 2.7e15 asked for 64 PB); past this, the list grows as vertices arrive.
+  points.reserve(std::min<long>(num_vertices, 1 << 20));
+  for (long v = 0; v < num_vertices; ++v) {
+    if (!NextContentLine(path, in, &line, &number)) {
+      Fail(path, number, "file ends after " + std::to_string(v) + " of " +
+                             std::to_string(num_vertices) + " vertices");
+    }
+    Point3 p;
+    if (!ParseThreeNumbers(line.c_str(), &p)) Fail(path, number, "malformed vertex line");
+    CheckFinite(path, number, p);
+    points.push_back(p);
+  }
+  return points;
+}
+
+// ---- PLY ----
+
+enum class PlyFormat { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
+
+struct PlyProperty {
+  std::string name;
+  std::string type;        // scalar type, or the item type of a list
+  std::string count_type;  // list count type; empty for scalars
+};
+
+struct PlyElement {
+  std::string name;
+  long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+int PlyTypeSize(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
+      type == "float" || type == "float32") {
+    return 4;
+  }
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+bool PlyTypeIsInteger(const std::string& type) {
+  return PlyTypeSize(type) > 0 && type != "float" && type != "float32" && type != "double" &&
+         type != "float64";
+}
+
+bool HostIsLittleEndian() {
+  const uint16_t probe = 1;
+  uint8_t first;
+  std::memcpy(&first, &probe, 1);
+  return first == 1;
+}
+
+// Reads one binary value of `type` and returns it as a double.
+double ReadBinaryValue(std::istream& in, const std::string& type, bool swap) {
+  unsigned char bytes[8];
+  const int size = PlyTypeSize(type);
+  if (!in.read(reinterpret_cast<char*>(bytes), size)) {
+    throw std::runtime_error("truncated binary data");
+  }
+  if (swap) std::reverse(bytes, bytes + size);
+  if (type == "char" || type == "int8") { int8_t x; std::memcpy(&x, bytes, 1); return x; }
+  if (type == "uchar" || type == "uint8") return bytes[0];
+  if (type == "short" || type == "int16") { int16_t x; std::memcpy(&x, bytes, 2); return x; }
+  if (type == "ushort" || type == "uint16") { uint16_t x; std::memcpy(&x, bytes, 2); return x; }
+  if (type == "int" || type == "int32") { int32_t x; std::memcpy(&x, bytes, 4); return x; }
+  if (type == "uint" || type == "uint32") { uint32_t x; std::memcpy(&x, bytes, 4); return x; }
+  if (type == "float" || type == "float32") { float x; std::memcpy(&x, bytes, 4); return x; }
+  double x;
+  std::memcpy(&x, bytes, 8);
+  return x;
+}
+
+// The fewest bytes one item of `element` takes: its scalars and list counts in binary, a
+// digit and a separator per scalar or list count in ascii (lists may be empty).
+uint64_t SmallestItemBytes(const PlyElement& element, PlyFormat format) {
+  uint64_t bytes = 0;
+  for (const PlyProperty& property : element.properties) {
+    if (format == PlyFormat::kAscii) {
+      bytes += 2;
+    } else {
+      bytes += PlyTypeSize(property.count_type.empty() ? property.type : property.count_type);
+    }
+  }
+  return std::max<uint64_t>(bytes, 1);
+}
+
+// Refuses a header whose element counts (up to the vertex element, the last one read) need
+// more bytes than the body has, before anything is allocated for them.
+void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
+                           const std::vector<PlyElement>& elements, std::istream* in) {
+  uint64_t body_bytes = 0;  // a header that ends the file leaves an empty body
+  if (!in->eof()) {
+    const std::streampos body_start = in->tellg();
+    in->seekg(0, std::ios::end);
+    const std::streampos end = in->tellg();
+    in->clear();
+    in->seekg(body_start);
+    if (body_start < 0 || end < body_start) return;  // not seekable: the reads check as they go
+    body_bytes = static_cast<uint64_t>(end - body_start);
+  }
+  uint64_t needed = 0;
+  for (const PlyElement& element : elements) {
+    const uint64_t item = SmallestItemBytes(element, format);
+    const uint64_t available = body_bytes > needed ? body_bytes - needed : 0;
+    if (static_cast<uint64_t>(element.count) > available / item) {
+      Fail(path, 0, "the header declares " + std::to_string(element.count) + " '" +
+                        element.name + "' items but the remaining " +
+                        std::to_string(available) + " bytes hold at most " +
+                        std::to_string(available / item));
+    }
+    needed += static_cast<uint64_t>(element.count) * item;
+    if (element.name == "vertex") break;
+  }
+}
+
+struct PlyHeader {
+  PlyFormat format = PlyFormat::kAscii;
+  std::vector<PlyElement> elements;
+  long lines = 0;  // up to and including end_header
+};
+
+// One property line of the header ("property TYPE NAME" or "property list COUNT TYPE NAME").
+PlyProperty ParsePlyProperty(const std::string& path, long number, std::istream& tokens) {
+  PlyProperty property;
+  std::string type;
+  tokens >> type;
+  if (type == "list") {
+    tokens >> property.count_type >> property.type;
+    if (!PlyTypeIsInteger(property.count_type)) {
+      Fail(path, number, "list count type must be an integer type, got '" +
+                             Excerpt(property.count_type) + "'");
+    }
+  } else {
+    property.type = type;
+  }
+  if (!(tokens >> property.name)) Fail(path, number, "malformed property line");
+  if (PlyTypeSize(property.type) == 0) {
+    Fail(path, number, "unknown property type '" + Excerpt(property.type) + "'");
+  }
+  return property;
+}
+
+PlyHeader ReadPlyHeader(const std::string& path, std::istream& in) {
+  std::string line;
+  if (!ReadLine(path, in, &line, 1) || line.rfind("ply", 0) != 0) {
+    Fail(path, 1, "not a PLY file (missing 'ply' magic)");
+  }
+  PlyHeader header;
+  header.lines = 1;
+  bool has_format = false;
+  while (ReadLine(path, in, &line, header.lines + 1)) {
+    const long number = ++header.lines;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "format") {
+      std::string name;
+      tokens >> name;
+      if (name == "ascii") header.format = PlyFormat::kAscii;
+      else if (name == "binary_little_endian") header.format = PlyFormat::kBinaryLittleEndian;
+      else if (name == "binary_big_endian") header.format = PlyFormat::kBinaryBigEndian;
+      else Fail(path, number, "unknown PLY format '" + name + "'");
+      has_format = true;
+    } else if (keyword == "element") {
+      PlyElement element;
+      if (!(tokens >> element.name >> element.count) || element.count < 0) {
+        Fail(path, number, "malformed element line");
+      }
+      header.elements.push_back(element);
+    } else if (keyword == "property") {
+      if (header.elements.empty()) Fail(path, number, "property before any element");
+      header.elements.back().properties.push_back(ParsePlyProperty(path, number, tokens));
+    } else if (keyword == "end_header") {
+      if (!has_format) Fail(path, number, "PLY header has no format line");
+      return header;
+    } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
+      Fail(path, number, "unknown PLY header keyword '" + keyword + "'");
+    }
+  }
+  Fail(path, header.lines, "PLY header has no end_header");
+}
+
+// Where the vertex element keeps x, y, z, the normal (all three or none) and every other
+// scalar property.
+struct VertexLayout {
+  int xyz[3] = {-1, -1, -1};
+  int normal[3] = {-1, -1, -1};
+  std::vector<size_t> scalars;
+  std::vector<size_t> index_fields;  // the uint properties
+
+  bool has_normals() const { return normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0; }
+};
+
+VertexLayout LayoutOf(const std::string& path, const PlyElement& vertex) {
+  VertexLayout layout;
+  const char* kNames[2][3] = {{"x", "y", "z"}, {"nx", "ny", "nz"}};
+  for (size_t a = 0; a < vertex.properties.size(); ++a) {
+    const PlyProperty& property = vertex.properties[a];
+    bool placed = false;
+    for (int c = 0; c < 3; ++c) {
+      if (property.name == kNames[0][c]) layout.xyz[c] = static_cast<int>(a), placed = true;
+      if (property.count_type.empty() && property.name == kNames[1][c]) {
+        layout.normal[c] = static_cast<int>(a), placed = true;
+      }
+    }
+    if (!placed && property.count_type.empty()) {
+      const bool index = property.type == "uint" || property.type == "uint32";
+      (index ? layout.index_fields : layout.scalars).push_back(a);
+    }
+  }
+  if (layout.xyz[0] < 0 || layout.xyz[1] < 0 || layout.xyz[2] < 0) {
+    Fail(path, 0, "the vertex element has no x, y, z properties");
+  }
+  return layout;
+}
+
+// Reads item `item` of `element` into `values` (one per property; a list keeps its last
+// value). `number` counts the lines read so far (ascii).
+void ReadPlyItem(const std::string& path, std::istream& in, PlyFormat format,
+                 const PlyElement& element, long item, long* number,
+                 std::vector<double>* values) {
+  if (format == PlyFormat::kAscii) {
+    std::string line;
+    if (!ReadLine(path, in, &line, *number + 1)) {
+      Fail(path, *number, "file ends inside element '" + element.name + "'");
+    }
+    ++*number;
+    std::istringstream tokens(line);
+    for (size_t a = 0; a < element.properties.size(); ++a) {
+      long count = 1;
+      if (!element.properties[a].count_type.empty() && !(tokens >> count)) count = -1;
+      if (count < 0) Fail(path, *number, "malformed list");
+      for (long c = 0; c < count; ++c) {
+        std::string token;
+        if (!(tokens >> token)) Fail(path, *number, "too few values on line");
+        char* end = nullptr;
+        (*values)[a] = std::strtod(token.c_str(), &end);
+        if (*end != '\0') Fail(path, *number, "malformed number '" + token + "'");
+      }
+    }
+    return;
+  }
+  const bool swap = (format == PlyFormat::kBinaryBigEndian) == HostIsLittleEndian();
+  try {
+    for (size_t a = 0; a < element.properties.size(); ++a) {
+      const PlyProperty& property = element.properties[a];
+      if (property.count_type.empty()) {
+        (*values)[a] = ReadBinaryValue(in, property.type, swap);
+        continue;
+      }
+      const long count = static_cast<long>(ReadBinaryValue(in, property.count_type, swap));
+      for (long c = 0; c < count; ++c) ReadBinaryValue(in, property.type, swap);
+    }
+  } catch (const std::runtime_error&) {
+    Fail(path, 0, "binary data ends inside element '" + element.name + "' (item " +
+                      std::to_string(item) + " of " + std::to_string(element.count) + ")");
+  }
+}
+
+// The vertex element as a PointCloud: x, y, z; nx, ny, nz as normals when all three exist;
+// every other scalar property as a named scalar. Elements before it are read and skipped.
+// Calls start(layout) once, then visit(values) for every vertex (its property values, in
+// the header's order), after checking its coordinates are finite.
+template <class Start, class Visit>
+void VisitPly(const std::string& path, std::istream& in, Start start, Visit visit) {
+  const PlyHeader header = ReadPlyHeader(path, in);
+  CheckPlyCountsFitBody(path, header.format, header.elements, &in);
+  long number = header.lines;
+  for (const PlyElement& element : header.elements) {
+    std::vector<double> values(element.properties.size());
+    if (element.name != "vertex") {
+      if (element.properties.empty()) continue;  // nothing to read, however many items
+      for (long item = 0; item < element.count; ++item) {
+        ReadPlyItem(path, in, header.format, element, item, &number, &values);
+      }
+      continue;
+    }
+    const VertexLayout layout = LayoutOf(path, element);
+    start(element, layout);
+    for (long item = 0; item < element.count; ++item) {
+      ReadPlyItem(path, in, header.format, element, item, &number, &values);
+      if (!Point3(values[layout.xyz[0]], values[layout.xyz[1]], values[layout.xyz[2]])
+               .allFinite()) {
+        Fail(path, header.format == PlyFormat::kAscii ? number : 0,
+             "vertex " + std::to_string(item) + " has a non-finite coordinate");
+      }
+      visit(layout, values);
+    }
+    return;
+  }
+}
+
+PointCloud ReadPly(const std::string& path, std::istream& in) {
+  PointCloud cloud;
+  auto start = [&](const PlyElement& vertex, const VertexLayout& layout) {
+    for (size_t a : layout.scalars) cloud.scalars.push_back({vertex.properties[a].name, {}});
+    for (size_t a : layout.index_fields) {
+      cloud.index_fields.push_back({vertex.properties[a].name, {}});
+    }
+    cloud.points.reserve(vertex.count);
+  };
+  auto visit = [&](const VertexLayout& layout, const std::vector<double>& values) {
+    cloud.points.emplace_back(values[layout.xyz[0]], values[layout.xyz[1]],
+                              values[layout.xyz[2]]);
+    if (layout.has_normals()) {
+      cloud.normals.emplace_back(values[layout.normal[0]], values[layout.normal[1]],
+                                 values[layout.normal[2]]);
+    }
+    for (size_t s = 0; s < layout.scalars.size(); ++s) {
+      cloud.scalars[s].second.push_back(static_cast<float>(values[layout.scalars[s]]));
+    }
+    for (size_t s = 0; s < layout.index_fields.size(); ++s) {
+      cloud.index_fields[s].second.push_back(
+          static_cast<uint32_t>(values[layout.index_fields[s]]));
+    }
+  };
+  VisitPly(path, in, start, visit);
+  return cloud;
+}
+
+}  // namespace
+
+std::string FileExtension(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string extension = path.substr(dot + 1);
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+namespace {
+
+// The file at `path` opened for reading, or a one-line error naming why it cannot be.
+std::ifstream OpenInput(const std::string& path) {
+  if (path.empty()) throw std::runtime_error("the input file name is empty");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) Fail(path, 0, "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) Fail(path, 0, "cannot open file (missing or unreadable)");
+  return in;
+}
+
+}  // namespace
+
+PointCloud ReadPointCloud(const std::string& path) {
+  std::ifstream in = OpenInput(path);
+  return ReadPointCloud(in, FileExtension(path), path);
+}
+
+PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
+                          const std::string& name) {
+  SkipByteOrderMark(name, in);
+  PointCloud cloud;
+  if (extension == "xyz" || extension == "txt" || extension == "pts") {
+    cloud = ReadXyz(name, in);
+  } else if (extension == "ply") {
+    cloud = ReadPly(name, in);
+  } else if (extension == "off") {
+    cloud.points = ReadOff(name, in);
+  } else if (extension == "obj") {
+    cloud.points = ReadObj(name, in);
+  } else {
+    Fail(name, 0, "unknown point-cloud format '." + extension +
+                      "' (expected .xyz, .txt, .pts, .ply, .off or .obj)");
+  }
+  if (cloud.points.empty()) Fail(name, 0, kNoPoints);
+  return cloud;
+}
+
+PointList ReadPoints(const std::string& path) { return ReadPointCloud(path).points; }
+
+const std::vector<float>* PointCloud::FindScalar(const std::string& name) const {
+  for (const auto& scalar : scalars) {
+    if (scalar.first == name) return &scalar.second;
+  }
+  return nullptr;
+}
+
+const std::vector<uint32_t>* PointCloud::FindIndexField(const std::string& name) const {
+  for (const auto& field : index_fields) {
+    if (field.first == name) return &field.second;
+  }
+  return nullptr;
+}
+
+void ForEachPoint(const std::string& path, const std::function<void(const Point3&)>& visit) {
+  const std::string extension = FileExtension(path);
+  if (extension != "xyz" && extension != "txt" && extension != "pts" && extension != "ply") {
+    for (const Point3& p : ReadPoints(path)) visit(p);
+    return;
+  }
+  std::ifstream in = OpenInput(path);
+  SkipByteOrderMark(path, in);
+  long count = 0;
+  if (extension == "ply") {
+    VisitPly(path, in, [](const PlyElement&, const VertexLayout&) {},
+             [&](const VertexLayout& layout, const std::vector<double>& values) {
+               visit(Point3(values[layout.xyz[0]], values[layout.xyz[1]], values[layout.xyz[2]]));
+               ++count;
+             });
+  } else {
+    VisitXyz(path, in, [&](const Point3& p, const char*) {
+      visit(p);
+      ++count;
+    });
+  }
+  if (count == 0) Fail(path, 0, kNoPoints);
+}
+
+PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
+                         bool with_normals, std::vector<std::string> scalars,
+                         std::vector<std::string> index_fields,
+                         const std::vector<std::string>& comments)
+    : file_(std::make_unique<AtomicOutputFile>(path, overwrite)),
+      ply_(FileExtension(path) == "ply"),
+      count_(count),
+      with_normals_(with_normals),
+      num_scalars_(scalars.size()),
+      num_index_fields_(index_fields.size()) {
+  const std::string extension = FileExtension(path);
+  if (!ply_ && extension != "xyz" && extension != "txt") {
+    throw std::runtime_error("cannot write '" + path +
+                             "': the output extension must be .ply, .xyz or .txt");
+  }
+  std::ofstream& out = file_->stream();
+  if (!ply_) {
+    out.precision(17);
+    return;
+  }
+  if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
+  out << "ply\nformat binary_little_endian 1.0\ncomment written by lpd\n";
+  for (const std::string& comment : comments) out << "comment " << comment << "\n";
+  out << "element vertex " << count << "\n";
+  out << "property double x\nproperty double y\nproperty double z\n";
+  if (with_normals) out << "property float nx\nproperty float ny\nproperty float nz\n";
+  for (const std::string& name : scalars) out << "property float " << name << "\n";
+  for (const std::string& name : index_fields) out << "property uint " << name << "\n";
+  out << "end_header\n";
+}
+
+PointWriter::~PointWriter() = default;
+
+void PointWriter::Write(const Point3& p, const Point3& normal, const float* scalars,
+                        const uint32_t* indices) {
+  ++written_;
+  std::ofstream& out = file_->stream();
+  if (!ply_) {
+    out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    return;
+  }
+  record_.clear();
+  auto append = [this](const void* data, size_t size) {
+    const char* bytes = static_cast<const char*>(data);
+    record_.insert(record_.end(), bytes, bytes + size);
+  };
+  append(p.data(), 3 * sizeof(double));
+  if (with_normals_) {
+    const Eigen::Vector3f as_float = normal.cast<float>();
+    append(as_float.data(), 3 * sizeof(float));
+  }
+  append(scalars, num_scalars_ * sizeof(float));
+  append(indices, num_index_fields_ * sizeof(uint32_t));
+  out.write(record_.data(), static_cast<std::streamsize>(record_.size()));
+}
+
+void PointWriter::Commit() {
+  if (written_ != count_) {
+    throw std::logic_error("PointWriter: " + std::to_string(written_) + " points written, " +
+                           std::to_string(count_) + " announced");
+  }
+  file_->Commit();
+}
+
+void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite) {
+  std::vector<std::string> scalar_names, index_names;
+  for (const auto& scalar : cloud.scalars) {
+    if (scalar.second.size() != cloud.points.size()) {
+      throw std::invalid_argument("scalar property '" + scalar.first + "' has the wrong size");
+    }
+    scalar_names.push_back(scalar.first);
+  }
+  for (const auto& field : cloud.index_fields) {
+    if (field.second.size() != cloud.points.size()) {
+      throw std::invalid_argument("index property '" + field.first + "' has the wrong size");
+    }
+    index_names.push_back(field.first);
+  }
+  const bool with_normals = !cloud.normals.empty();
+  PointWriter writer(path, overwrite, cloud.points.size(), with_normals, scalar_names,
+                     index_names, cloud.comments);
+  std::vector<float> scalars(scalar_names.size());
+  std::vector<uint32_t> indices(index_names.size());
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    for (size_t s = 0; s < scalars.size(); ++s) scalars[s] = cloud.scalars[s].second[i];
+    for (size_t s = 0; s < indices.size(); ++s) indices[s] = cloud.index_fields[s].second[i];
+    writer.Write(cloud.points[i], with_normals ? cloud.normals[i] : Point3::Zero(),
+                 scalars.data(), indices.data());
+  }
+  writer.Commit();
+}
+
+}  // namespace lpd::io

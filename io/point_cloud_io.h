@@ -1,0 +1,95 @@
+// lpd: reading and writing point clouds.
+//
+// Read: XYZ text (".xyz", ".txt", ".pts": the first three numbers of each line, separated by
+// spaces or tabs; '#' starts a comment; CRLF line ends and a UTF-8 byte-order mark are
+// accepted; columns 4-6 become normals when they are unit vectors on every line, other extra
+// columns are ignored), PLY (ascii, binary little or big endian; the x, y, z
+// properties of the "vertex" element), OFF and OBJ (vertices only). Every reader rejects
+// malformed lines, NaN and infinite coordinates with "FILE:LINE: reason", and empty files.
+// Write: PLY (binary little endian, with normals and per-point scalar properties that
+// CloudCompare and MeshLab show as scalar fields) or XYZ text, chosen by extension; writes
+// are atomic (see AtomicOutputFile).
+#ifndef LPD_IO_POINT_CLOUD_IO_H_
+#define LPD_IO_POINT_CLOUD_IO_H_
+
+#include <cstdint>
+#include <functional>
+#include <istream>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "energy/point3.h"
+
+namespace lpd::io {
+
+class AtomicOutputFile;
+
+struct PointCloud {
+  energy::PointList points;
+  energy::PointList normals;  // empty, or one per point
+  // Named per-point scalar properties (e.g. "outlier", "feature_score"), one value per point.
+  std::vector<std::pair<std::string, std::vector<float>>> scalars;
+  // Named per-point indices ("source_index", "tile"), PLY type uint: exact beyond the 2^24
+  // where a float stops counting. A PLY "uint" property is read into these.
+  std::vector<std::pair<std::string, std::vector<uint32_t>>> index_fields;
+  std::vector<std::string> comments;  // PLY header comments (one line each)
+
+  // The scalar property called `name`, or nullptr.
+  const std::vector<float>* FindScalar(const std::string& name) const;
+  // The index field called `name`, or nullptr.
+  const std::vector<uint32_t>* FindIndexField(const std::string& name) const;
+};
+
+// Throws std::runtime_error with a one-line reason on any problem, also when a PLY header
+// declares more items than its body can hold (nothing is allocated for them). PLY files also
+// give their normals (nx, ny, nz) and other per-vertex scalar properties, XYZ files their
+// normals as above; other formats give points only.
+PointCloud ReadPointCloud(const std::string& path);
+// The same from a stream holding a file of format `extension` ("xyz", "ply", ...); `name`
+// stands for the file in messages. `in` must be seekable (a file or a string stream).
+PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
+                          const std::string& name);
+energy::PointList ReadPoints(const std::string& path);
+
+// Calls visit(p) for every point of the file at `path` in file order, holding one line or
+// one PLY vertex at a time (.xyz/.txt/.pts and .ply; other formats are read whole first),
+// with the checks and errors of ReadPointCloud.
+void ForEachPoint(const std::string& path, const std::function<void(const energy::Point3&)>& visit);
+
+// Writes `cloud` to `path` (".ply" or ".xyz"/".txt"); throws std::runtime_error on failure.
+void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite);
+
+// Writes a point set point by point in WritePointCloud's layout: binary PLY with x y z
+// (double), nx ny nz (float) when `with_normals`, the float `scalars`, then the uint
+// `index_fields`; or XYZ text (points only). `count` points must be written before Commit,
+// which puts the file in place (AtomicOutputFile; nothing appears without it).
+class PointWriter {
+ public:
+  PointWriter(const std::string& path, bool overwrite, size_t count, bool with_normals,
+              std::vector<std::string> scalars, std::vector<std::string> index_fields,
+              const std::vector<std::string>& comments = {});
+  ~PointWriter();
+  // `scalars` and `indices` hold one value per scalar and index field, in their order.
+  void Write(const energy::Point3& p, const energy::Point3& normal, const float* scalars,
+             const uint32_t* indices);
+  void Commit();
+
+ private:
+  std::unique_ptr<AtomicOutputFile> file_;
+  bool ply_;
+  size_t count_;
+  size_t written_ = 0;
+  bool with_normals_;
+  size_t num_scalars_;
+  size_t num_index_fields_;
+  std::vector<char> record_;
+};
+
+// Lower-cased extension of `path` without the dot ("" if none).
+std::string FileExtension(const std::string& path);
+
+}  // namespace lpd::io
+
+#endif  // LPD_IO_POINT_CLOUD_IO_H_

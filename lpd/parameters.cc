@@ -1,0 +1,567 @@
+#include "lpd/parameters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+namespace lpd {
+namespace {
+
+using solvers::DenoiseOptions;
+using solvers::Solver;
+
+using Scope = ParameterScope;
+using Kind = ParameterKind;
+
+// One declaration: what users see (ParameterInfo) and where the value lives in
+// DenoiseOptions. Exactly one kind of accessor is set.
+struct Parameter {
+  ParameterInfo info;
+  std::function<int&(DenoiseOptions&)> integer;
+  std::function<double&(DenoiseOptions&)> number;
+  std::function<bool&(DenoiseOptions&)> flag;
+  // A named choice (or a value with an "auto"): `set_choice` throws std::invalid_argument
+  // on a text it does not take.
+  std::function<std::string(const DenoiseOptions&)> get_choice;
+  std::function<void(const std::string&, DenoiseOptions&)> set_choice;
+};
+
+// What --help and the documentation show of a parameter.
+struct Text {
+  std::string group;
+  std::string help;
+  std::string auto_rule = {};
+  std::string paper_value = {};
+};
+
+Parameter Named(std::string name, Kind kind, Scope scope, Text text) {
+  Parameter parameter;
+  parameter.info = {std::move(name), kind, scope, std::move(text.group), std::move(text.help),
+                    std::move(text.auto_rule), std::move(text.paper_value)};
+  return parameter;
+}
+
+Parameter Integer(std::string name, Scope scope, Text text,
+                  std::function<int&(DenoiseOptions&)> field) {
+  Parameter parameter = Named(std::move(name), Kind::kInteger, scope, std::move(text));
+  parameter.integer = std::move(field);
+  return parameter;
+}
+
+Parameter Number(std::string name, Scope scope, Text text,
+                 std::function<double&(DenoiseOptions&)> field) {
+  Parameter parameter = Named(std::move(name), Kind::kNumber, scope, std::move(text));
+  parameter.number = std::move(field);
+  return parameter;
+}
+
+Parameter Flag(std::string name, Scope scope, Text text,
+               std::function<bool&(DenoiseOptions&)> field) {
+  Parameter parameter = Named(std::move(name), Kind::kFlag, scope, std::move(text));
+  parameter.flag = std::move(field);
+  return parameter;
+}
+
+Parameter Choice(std::string name, Kind kind, Scope scope, Text text,
+                 std::function<std::string(const DenoiseOptions&)> get,
+                 std::function<void(const std::string&, DenoiseOptions&)> set) {
+  Parameter parameter = Named(std::move(name), kind, scope, std::move(text));
+  parameter.get_choice = std::move(get);
+  parameter.set_choice = std::move(set);
+  return parameter;
+}
+
+[[noreturn]] void ThrowUnknownChoice(const std::string& name, const std::string& text,
+                                     const std::string& choices) {
+  throw std::invalid_argument("parameter " + name + ": '" + text + "' is not one of " + choices);
+}
+
+// A choice stored as an enum with a name function and a parser (solvers' Name/Parse pairs).
+template <typename Enum, typename NameOf>
+Parameter EnumChoice(std::string name, Scope scope, Text text,
+                     std::function<Enum&(DenoiseOptions&)> field, NameOf name_of,
+                     bool (*parse)(const std::string&, Enum*), std::string choices) {
+  auto get = [field, name_of](const DenoiseOptions& o) {
+    DenoiseOptions copy = o;  // `field` reaches into a mutable DenoiseOptions
+    return std::string(name_of(field(copy)));
+  };
+  auto set = [name, field, parse, choices](const std::string& text, DenoiseOptions& o) {
+    if (!parse(text, &field(o))) ThrowUnknownChoice(name, text, choices);
+  };
+  return Choice(std::move(name), Kind::kChoice, scope, std::move(text), std::move(get),
+                std::move(set));
+}
+
+// `text` as a finite number; `expected` says what was expected ("a number or auto").
+double ParseNumber(const std::string& name, const std::string& text, const char* expected) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value)) {
+    throw std::invalid_argument("parameter " + name + ": '" + text + "' is not " + expected);
+  }
+  return value;
+}
+
+int ParseInteger(const std::string& name, const std::string& text, const char* expected) {
+  const double value = ParseNumber(name, text, expected);
+  if (value != std::floor(value)) {
+    throw std::invalid_argument("parameter " + name + ": '" + text + "' is not " + expected);
+  }
+  if (std::abs(value) > 1e9) {
+    throw std::invalid_argument("parameter " + name + ": " + text +
+                                " is out of range (at most 1e9 in magnitude)");
+  }
+  return static_cast<int>(value);
+}
+
+// The shortest of 15 or 17 significant digits that reads back as exactly `value` (a saved
+// state must resume with the very same doubles).
+std::string ExactText(double value) {
+  std::ostringstream out;
+  out.precision(15);
+  out << value;
+  if (std::strtod(out.str().c_str(), nullptr) == value) return out.str();
+  out.str("");
+  out.precision(17);
+  out << value;
+  return out.str();
+}
+
+// Values that take "auto" besides a number: the weights whose data rule is the parameter
+// `rule` of DenoiseOptions (0: off). A number switches the rule off, "auto" back on (with
+// its default when it was off).
+Parameter WeightWithDataRule(std::string name, Text text,
+                             std::function<double&(DenoiseOptions&)> weight,
+                             std::function<double&(DenoiseOptions&)> rule) {
+  auto get = [weight, rule](const DenoiseOptions& o) {
+    DenoiseOptions copy = o;
+    return rule(copy) > 0.0 ? std::string("auto") : ExactText(weight(copy));
+  };
+  auto set = [name, weight, rule](const std::string& text, DenoiseOptions& o) {
+    if (text == "auto") {
+      DenoiseOptions defaults;
+      if (!(rule(o) > 0.0)) rule(o) = rule(defaults);
+      return;
+    }
+    weight(o) = ParseNumber(name, text, "a number or auto");
+    rule(o) = 0.0;
+  };
+  return Choice(std::move(name), Kind::kNumber, Scope::kBoth, std::move(text), std::move(get),
+                std::move(set));
+}
+
+// k, the energy's weights and their data rules, the initial state.
+std::vector<Parameter> ProblemAndEnergyParameters() {
+  using O = DenoiseOptions;
+  constexpr Scope kBoth = Scope::kBoth;
+  const std::string kNeighbours = "neighbourhoods";
+  const std::string kEnergy = "energy (Eq. 5, Table 2)";
+  const std::string kStart = "start of the minimization";
+  return {
+      Choice(
+          "k", Kind::kInteger, kBoth,
+          {kNeighbours, "number of nearest neighbours |N(i)| (50-150 for heavy noise)",
+           "the points within k_radius_sigmas noise deviations, from the noise and point "
+           "spacing estimated on the input, within [12, max_k]",
+           "20"},
+          [](const O& o) {
+            return o.choose_k ? std::string("auto") : std::to_string(o.problem.k);
+          },
+          [](const std::string& text, O& o) {
+            o.choose_k = text == "auto";
+            if (!o.choose_k) o.problem.k = ParseInteger("k", text, "an integer or auto");
+          }),
+      Number("k_radius_sigmas", kBoth,
+             {kNeighbours,
+              "with k auto, k = pi (this x noise sigma / point spacing)^2: the neighbourhood "
+              "radius in estimated noise deviations"},
+             [](O& o) -> double& { return o.neighborhood.radius_in_sigmas; }),
+      Integer("max_k", kBoth, {kNeighbours, "with k auto, the largest k chosen"},
+              [](O& o) -> int& { return o.neighborhood.max_k; }),
+      Number("max_problem_size", kBoth,
+             {kNeighbours,
+              "with k auto, the largest problem solved, in neighbour entries n x k (1e7: about "
+              "0.6 GB); past it a random subsample is denoised and every point is projected "
+              "onto the subsample's surfaces"},
+             [](O& o) -> double& { return o.neighborhood.max_problem_size; }),
+      WeightWithDataRule(
+          "lambda",
+          {kEnergy,
+           "weight of the piecewise-smoothness term, in the frame normalized to diagonal 1 "
+           "(the paper's 1 fits its own setting only: use smoothing_balance to change the "
+           "data-derived value)",
+           "from smoothing_balance", "1"},
+          [](O& o) -> double& { return o.settings.energy.lambda; },
+          [](O& o) -> double& { return o.weights.smoothing_balance; }),
+      WeightWithDataRule(
+          "eta",
+          {kEnergy,
+           "weight of the stitching term |h_i - t_i|^2 (the paper's 5000 fits its own setting "
+           "only: use fit_balance to change the data-derived value)",
+           "from fit_balance", "5000"},
+          [](O& o) -> double& { return o.settings.energy.eta; },
+          [](O& o) -> double& { return o.weights.fit_balance; }),
+      WeightWithDataRule(
+          "mu_l",
+          {kEnergy,
+           "selectivity of the fitting line processes, a squared distance in the frame "
+           "normalized to diagonal 1",
+           "(mu_l_noise_sigmas x the noise estimate)^2", "5e-9"},
+          [](O& o) -> double& { return o.settings.energy.mu_l; },
+          [](O& o) -> double& { return o.settings.mu_l_noise_sigmas; }),
+      Number("mu_m", kBoth,
+             {kEnergy, "selectivity of the smoothness line processes (1 - cos 20 deg)", "",
+              "0.13"},
+             [](O& o) -> double& { return o.settings.energy.mu_m; }),
+      Number("fit_balance", kBoth,
+             {kEnergy,
+              "eta = this x (k + 1) x median alpha_i: the stitching weight against the "
+              "fitting term's (1: a tilt of h_i away from its data costs as much as one away "
+              "from t_i); 0 keeps eta",
+              "", "0"},
+             [](O& o) -> double& { return o.weights.fit_balance; }),
+      Number("smoothing_balance", kBoth,
+             {kEnergy,
+              "lambda such that the smoothness share of the T system's diagonal is this many "
+              "times the stitching share (median over the points; about the squared "
+              "smoothing radius in neighbour hops); 0 keeps lambda",
+              "", "0"},
+             [](O& o) -> double& { return o.weights.smoothing_balance; }),
+      Number("mu_l_noise_sigmas", kBoth,
+             {kEnergy,
+              "mu_l = (c sigma)^2 with c this value and sigma = 1.4826 median |h_i.q_j| "
+              "after the first local fit (a robust noise estimate); 0 keeps mu_l",
+              "", "0"},
+             [](O& o) -> double& { return o.settings.mu_l_noise_sigmas; }),
+      Choice(
+          "initialization", Kind::kChoice, kBoth,
+          {kStart,
+           "zero (Alg. 1: H = T = 0), plane_fit (PCA planes, T = H), random (uniform h_i, as "
+           "the reference implementation), input_normals (planes through the points with the "
+           "input's normals), or auto (zero for alternating, plane_fit for ceres)"},
+          [](const O& o) {
+            return o.initialization ? solvers::InitializationName(*o.initialization) : "auto";
+          },
+          [](const std::string& text, O& o) {
+            solvers::Initialization initialization;
+            if (text == "auto") {
+              o.initialization.reset();
+            } else if (solvers::ParseInitialization(text, &initialization)) {
+              o.initialization = initialization;
+            } else {
+              ThrowUnknownChoice("initialization", text,
+                                 "auto, zero, plane_fit, random, input_normals");
+            }
+          }),
+      Integer("initialization_seed", kBoth, {kStart, "random seed of initialization random"},
+              [](O& o) -> int& { return o.initialization_seed; }),
+  };
+}
+
+// Alg. 1's schedule, stopping rule, GNC and T solver.
+std::vector<Parameter> AlternatingParameters() {
+  using O = DenoiseOptions;
+  constexpr Scope kAlternating = Scope::kAlternating;
+  const std::string kSchedule = "schedule of Alg. 1 (solver alternating)";
+  const std::string kGnc = "graduated non-convexity (solver alternating)";
+  return {
+      Integer("max_iters", kAlternating,
+              {kSchedule,
+               "maximum outer iterations (the default converges after 20-60)", "", "5"},
+              [](O& o) -> int& { return o.minimizer.max_iterations; }),
+      Integer("inner_iters", kAlternating,
+              {kSchedule, "(T, M, S) passes per outer iteration", "", "2"},
+              [](O& o) -> int& { return o.minimizer.inner_iterations; }),
+      Number("energy_tolerance", kAlternating,
+             {kSchedule,
+              "stop when the energy changes by less than this fraction over three iterations; "
+              "0 with progress_tolerance 0 runs all iterations",
+              "", "0.01"},
+             [](O& o) -> double& { return o.minimizer.energy_tolerance; }),
+      Number("progress_tolerance", kAlternating,
+             {kSchedule,
+              "also stop when the last three iterations lowered the energy by less than this "
+              "fraction of its fall since the first iteration (0: off)",
+              "", "0"},
+             [](O& o) -> double& { return o.minimizer.progress_tolerance; }),
+      Flag("optimize_orientations", kAlternating,
+           {kSchedule, "update the orientations s_ij (Eq. 8); false holds them at 1 (Fig. 4)"},
+           [](O& o) -> bool& { return o.minimizer.optimize_orientations; }),
+      EnumChoice<solvers::GncTarget>(
+          "gnc", kAlternating,
+          {kGnc,
+           "continue mu_l, mu_m or both from a convex start down to their targets (none, "
+           "mu_l, mu_m, both); the stages count toward max_iters"},
+          [](O& o) -> solvers::GncTarget& { return o.minimizer.gnc.target; },
+          solvers::GncTargetName, solvers::ParseGncTarget, "none, mu_l, mu_m, both"),
+      Number("gnc_start_ratio", kAlternating,
+             {kGnc,
+              "first-stage mu as a multiple of its target; 0 starts where the Geman-McClure "
+              "cost is convex over all current residuals (3 max r^2)"},
+             [](O& o) -> double& { return o.minimizer.gnc.start_ratio; }),
+      Number("gnc_factor", kAlternating, {kGnc, "divide the continued mu by this every stage"},
+             [](O& o) -> double& { return o.minimizer.gnc.factor; }),
+      Integer("gnc_stage_iters", kAlternating, {kGnc, "outer iterations per stage"},
+              [](O& o) -> int& { return o.minimizer.gnc.stage_iterations; }),
+      Number("linear_tolerance", kAlternating,
+             {kSchedule, "relative residual at which the T solve (Eq. 9) stops"},
+             [](O& o) -> double& { return o.minimizer.linear_solver.relative_tolerance; }),
+      Integer("max_cg_iterations", kAlternating,
+              {kSchedule, "conjugate-gradient iterations per T solve, at most"},
+              [](O& o) -> int& { return o.minimizer.linear_solver.max_iterations; }),
+      EnumChoice<solvers::Preconditioner>(
+          "preconditioner", kAlternating,
+          {kSchedule,
+           "of the T solve's conjugate gradients: jacobi (1/K_ii) or multilevel (a multigrid "
+           "V-cycle on runs of 8 points along the Morton curve, block-Jacobi sweeps)"},
+          [](O& o) -> solvers::Preconditioner& { return o.minimizer.linear_solver.preconditioner; },
+          solvers::PreconditionerName, solvers::ParsePreconditioner, "jacobi, multilevel"),
+  };
+}
+
+// The Ceres joint solve.
+std::vector<Parameter> JointSolveParameters() {
+  using O = DenoiseOptions;
+  constexpr Scope kCeres = Scope::kCeres;
+  const std::string kJoint = "joint solve (solver ceres)";
+  return {
+      Choice(
+          "ceres_orientations", Kind::kChoice, kCeres,
+          {kJoint,
+           "s_ij as parameter blocks (blocks) or held at their optimum t_i.t_j/|t_j|^2, Eq. 8 "
+           "(closed_form)"},
+          [](const O& o) {
+            return std::string(o.joint.optimize_orientations ? "blocks" : "closed_form");
+          },
+          [](const std::string& text, O& o) {
+            if (text != "blocks" && text != "closed_form") {
+              ThrowUnknownChoice("ceres_orientations", text, "blocks, closed_form");
+            }
+            o.joint.optimize_orientations = text == "blocks";
+          }),
+      EnumChoice<ceres::LinearSolverType>(
+          "ceres_linear_solver", kCeres,
+          {kJoint, "sparse_schur, iterative_schur, sparse_normal_cholesky or cgnr"},
+          [](O& o) -> ceres::LinearSolverType& { return o.joint.linear_solver_type; },
+          solvers::JointLinearSolverName, solvers::ParseJointLinearSolver,
+          "sparse_schur, iterative_schur, sparse_normal_cholesky, cgnr"),
+      Integer("ceres_max_iters", kCeres, {kJoint, "Levenberg-Marquardt iterations at most"},
+              [](O& o) -> int& { return o.joint.max_iterations; }),
+      Number("ceres_function_tolerance", kCeres,
+             {kJoint, "stop when the cost changes by less (relative)"},
+             [](O& o) -> double& { return o.joint.function_tolerance; }),
+      Number("ceres_gradient_tolerance", kCeres,
+             {kJoint, "stop when the max-norm gradient is below this"},
+             [](O& o) -> double& { return o.joint.gradient_tolerance; }),
+      Number("ceres_parameter_tolerance", kCeres,
+             {kJoint, "stop when the step is below this (relative)"},
+             [](O& o) -> double& { return o.joint.parameter_tolerance; }),
+      Number("ceres_max_seconds", kCeres, {kJoint, "wall-time budget of the joint solve"},
+             [](O& o) -> double& { return o.joint.max_seconds; }),
+  };
+}
+
+// The final step of Sec. 3.4: projection, indicators, outlier passes, snapping.
+std::vector<Parameter> FinalStepParameters() {
+  using O = DenoiseOptions;
+  constexpr Scope kBoth = Scope::kBoth;
+  const std::string kFinal = "final denoising (Sec. 3.4)";
+  const std::string kOutliers = "outliers";
+  const std::string kSnapping = "feature snapping (Sec. 3.4)";
+  return {
+      EnumChoice<solvers::Projection>(
+          "projection", kBoth,
+          {kFinal,
+           "final projection of each point: plane (onto t_i, Sec. 3.4) or sphere (onto the "
+           "algebraic sphere fitted to its neighbours' planes, weighted by m_ij)",
+           "", "plane"},
+          [](O& o) -> solvers::Projection& { return o.final_step.projection; },
+          solvers::ProjectionName, solvers::ParseProjection, "plane, sphere"),
+      Integer("blended_surfaces", kBoth,
+              {kFinal,
+               "a point moves to the mean of its projections onto the surfaces of itself and "
+               "its nearest neighbours, this many in all (at most k + 1)",
+               "", "1"},
+              [](O& o) -> int& { return o.final_step.blended_surfaces; }),
+      Number("outlier_fraction", kBoth,
+             {kOutliers,
+              "outlier score (1 - the support-weighted fitting line processes the planes of "
+              "N(i) u {i} give q_i) at which i is an outlier",
+              "", "0.9"},
+             [](O& o) -> double& { return o.final_step.outlier_fraction; }),
+      Number("feature_threshold", kBoth, {kFinal, "m_ij below this counts as a feature vote"},
+             [](O& o) -> double& { return o.final_step.feature_line_threshold; }),
+      Number("feature_fraction", kBoth,
+             {kFinal, "share of feature votes above which i is a feature point", "", "0.7"},
+             [](O& o) -> double& { return o.final_step.feature_fraction; }),
+      Flag("remove_outliers", kBoth, {kOutliers, "drop points flagged as outliers from the output"},
+           [](O& o) -> bool& { return o.final_step.remove_outliers; }),
+      Number("max_removed_fraction", kBoth,
+             {kOutliers, "keep all points (and say so) if more than this share is flagged"},
+             [](O& o) -> double& { return o.final_step.max_removed_fraction; }),
+      Integer("outlier_passes", kBoth,
+              {kOutliers,
+               "denoising passes at most: while a pass removes more than "
+               "outlier_rerun_fraction of its points, the kept points are denoised again from "
+               "their input coordinates",
+               "", "1"},
+              [](O& o) -> int& { return o.final_step.outlier_passes; }),
+      Number("outlier_rerun_fraction", kBoth,
+             {kOutliers, "share of removed points above which another pass runs"},
+             [](O& o) -> double& { return o.final_step.rerun_removed_fraction; }),
+      Number("isolation_factor", kBoth,
+             {kOutliers,
+              "after the passes, a kept point whose isolation_neighbors-th nearest kept point "
+              "is farther than this many times the median such distance, over all kept points "
+              "and over its own neighbours, is an outlier (0: off)",
+              "", "0"},
+             [](O& o) -> double& { return o.final_step.isolation.radius_factor; }),
+      Integer("isolation_neighbors", kBoth,
+              {kOutliers, "the neighbour rank of isolation_factor's test"},
+              [](O& o) -> int& { return o.final_step.isolation.neighbors; }),
+      Flag("snap_features", kBoth,
+           {kSnapping,
+            "move feature points onto the intersection line of the two DBSCAN clusters of "
+            "their neighbours' planes t_j"},
+           [](O& o) -> bool& { return o.final_step.snap_features; }),
+      Number("snap_cluster_angle_deg", kBoth,
+             {kSnapping,
+              "DBSCAN radius: neighbouring planes whose normals are at most this many degrees "
+              "apart are close"},
+             [](O& o) -> double& { return o.final_step.snapping.cluster_angle_deg; }),
+      Integer("snap_min_cluster_planes", kBoth,
+              {kSnapping,
+               "DBSCAN density: planes within the radius (itself included) that make a core "
+               "plane"},
+              [](O& o) -> int& { return o.final_step.snapping.min_cluster_planes; }),
+  };
+}
+
+// mu_m as an angle: a second spelling of mu_m, never saved or listed as a column.
+Parameter MuMAngle() {
+  return Choice(
+      "mu_m_deg", Kind::kNumber, Scope::kBoth,
+      {"energy (Eq. 5, Table 2)",
+       "mu_m = 1 - cos(angle) from an angle in degrees in (0, 180) (30 gives 0.134); another "
+       "spelling of mu_m"},
+      [](const DenoiseOptions& o) {
+        return ExactText(std::acos(1.0 - o.settings.energy.mu_m) * 180.0 / M_PI);
+      },
+      [](const std::string& text, DenoiseOptions& o) {
+        const double angle = ParseNumber("mu_m_deg", text, "a number");
+        if (!(angle > 0.0 && angle < 180.0)) {
+          throw std::invalid_argument("parameter mu_m_deg must be in (0, 180), got " + text);
+        }
+        o.settings.energy.mu_m = 1.0 - std::cos(angle * M_PI / 180.0);
+      });
+}
+
+const std::vector<Parameter>& Parameters() {
+  static const std::vector<Parameter> parameters = [] {
+    std::vector<Parameter> all;
+    for (auto group : {ProblemAndEnergyParameters, AlternatingParameters,
+                       JointSolveParameters, FinalStepParameters}) {
+      for (Parameter& parameter : group()) all.push_back(std::move(parameter));
+    }
+    all.push_back(MuMAngle());
+    return all;
+  }();
+  return parameters;
+}
+
+const Parameter& Find(const std::string& name) {
+  for (const Parameter& parameter : Parameters()) {
+    if (parameter.info.name == name) return parameter;
+  }
+  throw std::invalid_argument("unknown parameter '" + name + "'");
+}
+
+}  // namespace
+
+const std::vector<ParameterInfo>& DenoiseParameters() {
+  static const std::vector<ParameterInfo> infos = [] {
+    std::vector<ParameterInfo> list;
+    for (const Parameter& parameter : Parameters()) list.push_back(parameter.info);
+    return list;
+  }();
+  return infos;
+}
+
+const std::vector<std::string>& DenoiseParameterNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const Parameter& parameter : Parameters()) {
+      if (parameter.info.name != "mu_m_deg") list.push_back(parameter.info.name);
+    }
+    return list;
+  }();
+  return names;
+}
+
+const ParameterInfo& FindDenoiseParameter(const std::string& name) { return Find(name).info; }
+
+bool DenoiseParameterApplies(const std::string& name, Solver solver) {
+  const Scope scope = Find(name).info.scope;
+  return scope == Scope::kBoth ||
+         scope == (solver == Solver::kCeres ? Scope::kCeres : Scope::kAlternating);
+}
+
+void SetDenoiseParameter(const std::string& name, const std::string& text,
+                         DenoiseOptions* options) {
+  const Parameter& parameter = Find(name);
+  if (parameter.set_choice) {
+    parameter.set_choice(text, *options);
+  } else if (parameter.flag) {
+    if (text == "true" || text == "1") {
+      parameter.flag(*options) = true;
+    } else if (text == "false" || text == "0") {
+      parameter.flag(*options) = false;
+    } else {
+      throw std::invalid_argument("parameter " + name + ": '" + text + "' is not true or false");
+    }
+  } else if (parameter.number) {
+    parameter.number(*options) = ParseNumber(name, text, "a number");
+  } else {
+    parameter.integer(*options) = ParseInteger(name, text, "an integer");
+  }
+}
+
+std::string GetDenoiseParameter(const std::string& name, const DenoiseOptions& options) {
+  const Parameter& parameter = Find(name);
+  if (parameter.get_choice) return parameter.get_choice(options);
+  DenoiseOptions copy = options;  // the accessors hand out mutable references
+  if (parameter.flag) return parameter.flag(copy) ? "true" : "false";
+  if (parameter.number) return ExactText(parameter.number(copy));
+  return std::to_string(parameter.integer(copy));
+}
+
+void RefuseConflictingParameters(
+    const std::vector<std::pair<std::string, std::string>>& given) {
+  static const std::pair<const char*, const char*> kConflicts[] = {
+      {"eta", "fit_balance"},         {"lambda", "smoothing_balance"},
+      {"mu_l", "mu_l_noise_sigmas"},  {"mu_m", "mu_m_deg"},
+      {"k", "k_radius_sigmas"},       {"k", "max_k"},
+      {"k", "max_problem_size"},
+  };
+  // The value of `name` among `given`, or nullptr.
+  auto value_of = [&given](const char* name) -> const std::string* {
+    for (const auto& [given_name, value] : given) {
+      if (given_name == name) return &value;
+    }
+    return nullptr;
+  };
+  for (const auto& [first, second] : kConflicts) {
+    const std::string* first_value = value_of(first);
+    if (first_value && *first_value != "auto" && value_of(second)) {
+      throw std::invalid_argument(std::string("give either ") + first + " or " + second +
+                                  ", not both (" + second + " only acts when " + first +
+                                  " is auto)");
+    }
+  }
+}
+
+}  // namespace lpd

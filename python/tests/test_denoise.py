@@ -1,0 +1,175 @@
+"""The Python module against the lpd program and against its own promises."""
+import os
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import lpd
+from conftest import noisy_box
+
+
+def read_binary_ply(path):
+    """The vertex properties of a binary little-endian PLY, by name (an independent reader)."""
+    with open(path, "rb") as f:
+        header = []
+        while True:
+            line = f.readline().decode("ascii").strip()
+            header.append(line)
+            if line == "end_header":
+                break
+        body = f.read()
+    assert "format binary_little_endian 1.0" in header
+    types = {"double": "<f8", "float": "<f4", "uint": "<u4", "int": "<i4", "uchar": "u1"}
+    count, fields = 0, []
+    for line in header:
+        words = line.split()
+        if words[:2] == ["element", "vertex"]:
+            count = int(words[2])
+        elif words[:1] == ["property"]:
+            fields.append((words[2], types[words[1]]))
+    return np.frombuffer(body, dtype=np.dtype(fields), count=count)
+
+
+def test_numpy_in_out_is_the_cli_bit_for_bit(tmp_path, lpd_binary, shared_data):
+    source = os.path.join(shared_data, "noisy", "fandisk_noise_0.01.xyz")
+    output = tmp_path / "cli.ply"
+    subprocess.run([lpd_binary, "denoise", source, "-o", str(output), "--threads=2", "--quiet"],
+                   check=True, capture_output=True)
+    cli = read_binary_ply(output)
+    points = np.loadtxt(source)[:, :3]
+    result = lpd.denoise(points, threads=2)
+    assert result.points.dtype == np.float64
+    np.testing.assert_array_equal(result.index, cli["source_index"])
+    np.testing.assert_array_equal(result.points, np.stack([cli["x"], cli["y"], cli["z"]], 1))
+    np.testing.assert_array_equal(result.outlier_score, cli["outlier_score"])
+    assert result.summary["output_points"] == len(cli)
+
+
+def test_float32_and_float64_give_the_same_run():
+    points = noisy_box(3000, 0.005, seed=1).astype(np.float32)
+    single = lpd.denoise(points, threads=1)
+    double = lpd.denoise(points.astype(np.float64), threads=1)
+    assert single.points.dtype == np.float32 and double.points.dtype == np.float64
+    np.testing.assert_array_equal(single.index, double.index)
+    np.testing.assert_array_equal(single.points, double.points.astype(np.float32))
+
+
+def test_result_rows_follow_the_kept_input_rows():
+    points = noisy_box(3000, 0.005, seed=2)
+    result = lpd.denoise(points, threads=1)
+    n = len(result.points)
+    assert result.normals.shape == (n, 3) and result.index.shape == (n,)
+    assert np.all(np.diff(result.index) > 0)
+    # each output point stays close to the input point it comes from
+    assert np.max(np.linalg.norm(result.points - points[result.index], axis=1)) < 0.05
+    np.testing.assert_allclose(np.linalg.norm(result.normals, axis=1), 1.0, atol=1e-9)
+    summary = result.summary
+    assert summary["input_points"] == 3000 and summary["output_points"] == n
+    assert summary["removed"] == 3000 - n
+    assert summary["termination"] in ("CONVERGENCE", "NO_CONVERGENCE")
+
+
+def test_denoising_brings_the_box_closer_to_its_faces():
+    clean_distance = lambda p: np.min(np.abs(np.concatenate([p, 1.0 - p], 1)), axis=1)
+    points = noisy_box(6000, 0.01, seed=3)
+    result = lpd.denoise(points, threads=2)
+    before = np.mean(clean_distance(points))
+    after = np.mean(clean_distance(result.points))
+    assert after < 0.6 * before
+
+
+def test_options_are_the_cli_flags():
+    points = noisy_box(2000, 0.005, seed=4)
+    result = lpd.denoise(points, threads=1, k=15, max_iters=3, snap_features=True,
+                         mu_m_deg=25.0, projection="plane")
+    assert result.summary["k"] == 15 and result.summary["iterations"] <= 3
+    np.testing.assert_allclose(result.summary["mu_m"], 1 - np.cos(np.radians(25.0)))
+    paper = lpd.denoise(points, threads=1, preset="paper")
+    assert paper.summary["k"] == 20 and paper.summary["lambda"] == 1.0
+    names = [p["name"] for p in lpd.parameters()]
+    assert "lambda" in names and "isolation_factor" in names
+    assert next(p for p in lpd.parameters() if p["name"] == "lambda")["default"] == "auto"
+
+
+@pytest.mark.parametrize("points, message", [
+    (np.full((100, 3), np.nan), "not finite"),
+    (np.zeros((100, 2)), "shape (N, 3)"),
+    (np.zeros(300), "shape (N, 3)"),
+    (np.array([["a", "b", "c"]]), "array of numbers"),
+    (noisy_box(5, 0.01, seed=5), "need at least"),
+])
+def test_bad_points_raise_value_error(points, message):
+    with pytest.raises(ValueError) as error:
+        lpd.denoise(points)
+    assert message in str(error.value)
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"lambdaa": 1.0}, "unknown parameter 'lambdaa'"),
+    ({"k": "many"}, "parameter k"),
+    ({"max_iters": 0}, "max_iters"),
+    ({"gnc": "sometimes"}, "gnc"),
+    ({"eta": 10.0, "fit_balance": 2.0}, "not both"),
+    ({"preset": "fast"}, "preset"),
+    ({"threads": -1}, "num_threads"),
+    ({"ceres_max_iters": 5}, "no effect"),
+])
+def test_bad_options_raise_value_error(options, message):
+    with pytest.raises(ValueError) as error:
+        lpd.denoise(noisy_box(500, 0.01, seed=6), **options)
+    assert message in str(error.value)
+
+
+def test_open3d_cloud_round_trip_keeps_colours():
+    o3d = pytest.importorskip("open3d")
+    points = noisy_box(3000, 0.005, seed=7)
+    colours = np.clip(points, 0.0, 1.0)
+    cloud = o3d.geometry.PointCloud()
+    cloud.points = o3d.utility.Vector3dVector(points)
+    cloud.colors = o3d.utility.Vector3dVector(colours)
+    out = lpd.denoise(cloud, threads=1)
+    assert isinstance(out, o3d.geometry.PointCloud)
+    reference = lpd.denoise(points, threads=1)
+    np.testing.assert_array_equal(np.asarray(out.points), reference.points)
+    np.testing.assert_array_equal(np.asarray(out.colors), colours[reference.index])
+    np.testing.assert_array_equal(np.asarray(out.normals), reference.normals)
+
+
+def test_ctrl_c_raises_keyboard_interrupt_and_stops_the_solve():
+    import _thread
+
+    points = noisy_box(60000, 0.005, seed=8)
+    timer = threading.Timer(1.0, _thread.interrupt_main)
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            lpd.denoise(points, threads=2, max_iters=1000, energy_tolerance=0,
+                        progress_tolerance=0)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 30.0
+
+
+def test_the_gil_is_released_during_the_solve():
+    points = noisy_box(30000, 0.005, seed=9)
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(time.monotonic())
+            time.sleep(0.01)
+
+    ticker = threading.Thread(target=tick)
+    ticker.start()
+    try:
+        lpd.denoise(points, threads=1, max_iters=10, energy_tolerance=0, progress_tolerance=0)
+    finally:
+        stop.set()
+        ticker.join()
+    # a thread waiting for the GIL would tick once per iteration at best
+    assert len(ticks) > 20

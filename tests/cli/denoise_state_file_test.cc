@@ -1,0 +1,146 @@
+// Warm restart: a run saved after some iterations and resumed from the file must be the same
+// bit for bit as the uninterrupted run; broken files must be rejected with a reason.
+#include "cli/denoise_state_file.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "lpd/parameters.h"
+#include "test_problems.h"
+
+namespace lpd::cli {
+namespace {
+
+std::string TemporaryPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("lpd_state_test_" + std::to_string(::getpid()) + "_" + name))
+      .string();
+}
+
+solvers::DenoiseOptions RunOptions(int max_iterations) {
+  solvers::DenoiseOptions options;
+  options.settings.num_threads = 2;
+  options.minimizer.max_iterations = max_iterations;
+  // Everything that carries state across iterations: the scale-aware mu_l, a continuation
+  // still under way at the split, and the energy history of the stopping test.
+  options.settings.mu_l_noise_sigmas = 3.0;
+  options.minimizer.gnc.target = solvers::GncTarget::kBoth;
+  options.minimizer.gnc.factor = 3.0;
+  options.minimizer.gnc.stage_iterations = 2;
+  options.minimizer.energy_tolerance = 1e-9;
+  options.settings.energy.mu_m = 1.0 - std::cos(25.0 * M_PI / 180.0);  // not a short decimal
+  return options;
+}
+
+void ExpectSameBits(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                    const Eigen::Ref<const Eigen::MatrixXd>& b, const char* what) {
+  ASSERT_EQ(a.rows(), b.rows()) << what;
+  ASSERT_EQ(a.cols(), b.cols()) << what;
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), sizeof(double) * a.size()), 0) << what;
+}
+
+TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
+  const energy::PointList points = testing::NoisySphere(3000, 0.01, 11);
+  const std::string path = TemporaryPath("resume.lpds");
+  std::remove(path.c_str());
+
+  const solvers::DenoiseOptions full_options = RunOptions(9);
+  solvers::DenoiseState full = solvers::StartDenoising(points, full_options);
+  const solvers::SolverSummary full_summary = solvers::MinimizeFromState(full_options, &full);
+  ASSERT_EQ(full_summary.num_iterations, 9);
+
+  const solvers::DenoiseOptions first_options = RunOptions(4);
+  solvers::DenoiseState first = solvers::StartDenoising(points, first_options);
+  solvers::MinimizeFromState(first_options, &first);
+  ASSERT_FALSE(first.progress.gnc.mu_m.AtTarget(first_options.settings.energy.mu_m))
+      << "the split should fall inside the continuation";
+  WriteDenoiseState(path, first, first_options, /*overwrite=*/false);
+
+  SavedDenoiseRun saved = ReadDenoiseState(path);
+  std::remove(path.c_str());
+  EXPECT_EQ(saved.num_threads, 2);
+  solvers::DenoiseOptions resumed_options;
+  for (const auto& [name, value] : saved.parameters) {
+    SetDenoiseParameter(name, value, &resumed_options);
+  }
+  resumed_options.settings.num_threads = saved.num_threads;
+  resumed_options.minimizer.max_iterations = 5;
+  EXPECT_EQ(resumed_options.settings.energy.mu_m, full_options.settings.energy.mu_m);
+  solvers::DenoiseState& resumed = saved.state;
+  // The rebuilt problem: same points, graph and weights without a k-NN search.
+  EXPECT_EQ(resumed.order, full.order);
+  EXPECT_EQ(resumed.problem.graph.pairs, full.problem.graph.pairs);
+  EXPECT_EQ(resumed.problem.alpha, full.problem.alpha);
+  EXPECT_EQ(resumed.problem.beta, full.problem.beta);
+  const solvers::SolverSummary resumed_summary =
+      solvers::MinimizeFromState(resumed_options, &resumed);
+
+  EXPECT_EQ(resumed_summary.iterations.front().iteration, 5);
+  EXPECT_EQ(resumed_summary.num_iterations, 9);
+  ExpectSameBits(resumed.variables.h, full.variables.h, "H");
+  ExpectSameBits(resumed.variables.t, full.variables.t, "T");
+  ExpectSameBits(resumed.variables.l, full.variables.l, "L");
+  ExpectSameBits(resumed.variables.m, full.variables.m, "M");
+  ExpectSameBits(resumed.variables.s, full.variables.s, "S");
+  EXPECT_EQ(resumed_summary.final_energy.total(), full_summary.final_energy.total());
+  EXPECT_EQ(resumed.progress.energy_history, full.progress.energy_history);
+}
+
+TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
+  const energy::PointList points = testing::NoisySphere(500, 0.01, 12);
+  const solvers::DenoiseOptions options = RunOptions(1);
+  solvers::DenoiseState state = solvers::StartDenoising(points, options);
+  solvers::MinimizeFromState(options, &state);
+  const std::string path = TemporaryPath("broken.lpds");
+  std::remove(path.c_str());
+  WriteDenoiseState(path, state, options, false);
+  EXPECT_THROW(WriteDenoiseState(path, state, options, false), std::runtime_error);
+
+  const auto size = std::filesystem::file_size(path);
+  auto expect_rejected = [&](const std::string& reason) {
+    try {
+      ReadDenoiseState(path);
+      ADD_FAILURE() << "accepted a file that should fail with: " << reason;
+    } catch (const std::runtime_error& error) {
+      EXPECT_NE(std::string(error.what()).find(reason), std::string::npos) << error.what();
+    }
+  };
+  // The version is the 4 bytes after the 8-byte magic. A version-3 state (from before the
+  // progress test) resumes with the test off; versions outside 3-4 are refused.
+  auto set_version = [&](uint32_t version) {
+    std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+    file.seekp(8);
+    file.write(reinterpret_cast<const char*>(&version), sizeof(version));
+  };
+  set_version(3);
+  {
+    const SavedDenoiseRun old = ReadDenoiseState(path);
+    solvers::DenoiseOptions resumed;
+    ASSERT_FALSE(old.parameters.empty());
+    EXPECT_EQ(old.parameters.front().first, "progress_tolerance");
+    SetDenoiseParameter(old.parameters.front().first, old.parameters.front().second, &resumed);
+    EXPECT_EQ(resumed.minimizer.progress_tolerance, 0.0);
+  }
+  set_version(5);
+  expect_rejected("state file version 5");
+  set_version(4);
+  EXPECT_NE(ReadDenoiseState(path).parameters.front().first, "progress_tolerance");
+  std::filesystem::resize_file(path, size / 2);
+  expect_rejected("truncated");
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << "x y z\n1 2 3\n";
+  }
+  expect_rejected("not an lpd state file");
+  std::remove(path.c_str());
+  expect_rejected("cannot open");
+}
+
+}  // namespace
+}  // namespace lpd::cli

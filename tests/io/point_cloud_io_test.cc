@@ -1,0 +1,229 @@
+// Readers and writers: round trips, every format, and clear errors on bad files.
+#include "io/point_cloud_io.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "io/atomic_output_file.h"
+
+namespace lpd::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PointCloudIoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("lpd_io_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                  "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+  std::string Write(const std::string& name, const std::string& text) {
+    const std::string path = (directory_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+  // The message of the exception io::ReadPoints throws on `path` ("" if none).
+  static std::string ReadError(const std::string& path) {
+    try {
+      io::ReadPoints(path);
+    } catch (const std::runtime_error& error) {
+      return error.what();
+    }
+    return "";
+  }
+  fs::path directory_;
+};
+
+TEST_F(PointCloudIoTest, ReadsEveryFormat) {
+  EXPECT_EQ(io::ReadPoints(Write("a.xyz", "# comment\n1 2 3 9 9\n\n4 5 6\n")).size(), 2u);
+  const auto obj = io::ReadPoints(Write("a.obj", "# c\nv 1 2 3\nvn 0 0 1\nv 4 5 6\nf 1 2 2\n"));
+  ASSERT_EQ(obj.size(), 2u);
+  EXPECT_EQ(obj[1], energy::Point3(4, 5, 6));
+  const auto off = io::ReadPoints(Write("a.off", "OFF\n# c\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  ASSERT_EQ(off.size(), 3u);
+  EXPECT_EQ(off[2], energy::Point3(0, 1, 0));
+  const auto ply = io::ReadPoints(Write(
+      "a.ply",
+      "ply\nformat ascii 1.0\nelement vertex 2\nproperty float y\nproperty float x\n"
+      "property float z\nproperty uchar red\nelement face 1\nproperty list uchar int "
+      "vertex_indices\nend_header\n1 2 3 255\n4 5 6 0\n3 0 1 1\n"));
+  ASSERT_EQ(ply.size(), 2u);
+  EXPECT_EQ(ply[0], energy::Point3(2, 1, 3));
+}
+
+TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
+  io::PointCloud cloud;
+  cloud.points = {{1.5, -2.25, 1e-9}, {3, 4, 5}};
+  cloud.normals = {{0, 0, 1}, {1, 0, 0}};
+  cloud.scalars = {{"feature", {1.0f, 0.0f}}};
+  const std::string path = (directory_ / "out.ply").string();
+  io::WritePointCloud(path, cloud, false);
+  const auto points = io::ReadPoints(path);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0], cloud.points[0]);
+  EXPECT_EQ(points[1], cloud.points[1]);
+  // An existing output is never replaced without `overwrite`, and is left intact.
+  EXPECT_THROW(io::WritePointCloud(path, io::PointCloud{{{9, 9, 9}}, {}, {}, {}, {}}, false),
+               std::runtime_error);
+  EXPECT_EQ(io::ReadPoints(path).size(), 2u);
+  const std::string xyz = (directory_ / "out.xyz").string();
+  io::WritePointCloud(xyz, cloud, false);
+  EXPECT_EQ(io::ReadPoints(xyz)[0], cloud.points[0]);
+}
+
+TEST_F(PointCloudIoTest, IndexFieldsStayExactPastTheFloatMantissa) {
+  // 2^24 + 1 is the first integer a float cannot hold.
+  io::PointCloud cloud;
+  cloud.points = {{0, 0, 0}, {1, 1, 1}};
+  cloud.scalars = {{"score", {0.5f, 0.25f}}};
+  cloud.index_fields = {{"source_index", {16777217u, 4000000000u}}};
+  const std::string path = (directory_ / "indices.ply").string();
+  io::WritePointCloud(path, cloud, false);
+  const io::PointCloud read = io::ReadPointCloud(path);
+  ASSERT_NE(read.FindIndexField("source_index"), nullptr);
+  EXPECT_EQ(*read.FindIndexField("source_index"), cloud.index_fields[0].second);
+  ASSERT_NE(read.FindScalar("score"), nullptr);
+  EXPECT_EQ(*read.FindScalar("score"), cloud.scalars[0].second);
+  EXPECT_EQ(read.FindScalar("source_index"), nullptr);
+}
+
+// Every point io::ForEachPoint visits, or the message of the exception it throws.
+std::pair<energy::PointList, std::string> StreamPoints(const std::string& path) {
+  energy::PointList points;
+  try {
+    io::ForEachPoint(path, [&](const energy::Point3& p) { points.push_back(p); });
+  } catch (const std::runtime_error& error) {
+    return {points, error.what()};
+  }
+  return {points, ""};
+}
+
+TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
+  io::PointCloud cloud;
+  cloud.points = {{1.5, -2.25, 1e-9}, {3, 4, 5}, {-7, 0.125, 2}};
+  cloud.normals = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
+  cloud.scalars = {{"score", {0.5f, 0.25f, 1.0f}}};
+  const std::string binary = (directory_ / "binary.ply").string();
+  io::WritePointCloud(binary, cloud, false);
+  const std::string paths[] = {
+      binary,
+      Write("ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                         "property float y\nproperty float z\nend_header\n1 2 3\n4 5 6\n"),
+      Write("a.xyz", "# comment\n1 2 3 9 9\n\n4 5 6\n"),
+      Write("a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")};
+  for (const std::string& path : paths) {
+    const auto [streamed, error] = StreamPoints(path);
+    EXPECT_EQ(error, "") << path;
+    EXPECT_EQ(streamed, io::ReadPoints(path)) << path;
+  }
+  for (const char* bad : {"nan.xyz", "empty.xyz", "bad.ply"}) {
+    const std::string path =
+        Write(bad, std::string(bad) == "nan.xyz"   ? "1 2 3\nnan 2 3\n"
+                   : std::string(bad) == "bad.ply" ? "ply\nformat ascii 1.0\nelement vertex 2\n"
+                                                     "property float x\nend_header\n1\n2\n"
+                                                   : "");
+    EXPECT_EQ(StreamPoints(path).second, ReadError(path)) << bad;
+    EXPECT_NE(ReadError(path), "") << bad;
+  }
+}
+
+TEST_F(PointCloudIoTest, APointWriterShortOfItsCountLeavesNoFile) {
+  const std::string path = (directory_ / "short.ply").string();
+  {
+    io::PointWriter writer(path, false, 2, false, {}, {});
+    writer.Write({1, 2, 3}, {0, 0, 0}, nullptr, nullptr);
+    EXPECT_THROW(writer.Commit(), std::logic_error);
+  }
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST_F(PointCloudIoTest, BadFilesGiveOneLineErrorsNamingTheProblem) {
+  EXPECT_NE(ReadError((directory_ / "missing.xyz").string()).find("cannot open"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("empty.xyz", "")).find("no points"), std::string::npos);
+  EXPECT_NE(ReadError(Write("bad.xyz", "1 2 3\n1 2 x\n")).find("bad.xyz:2:"), std::string::npos);
+  EXPECT_NE(ReadError(Write("nan.xyz", "1 2 3\nnan 2 3\n")).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("inf.xyz", "1 2 3\n1 inf 3\n")).find("inf.xyz:2:"), std::string::npos);
+  EXPECT_NE(ReadError(Write("inf2.xyz", "1 2 3\n1 -inf 3\n")).find("non-finite"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("a.abc", "1 2 3\n")).find("unknown point-cloud format"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("t.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 5\n"
+                                     "property float x\nproperty float y\nproperty float z\n"
+                                     "end_header\nabc"))
+                .find("declares 5 'vertex' items but the remaining 3 bytes hold at most 0"),
+            std::string::npos);
+  // A list longer than the body: the counts fit, the data does not.
+  const std::string list_header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uchar float x\n"
+      "property float y\nproperty float z\nend_header\n";
+  EXPECT_NE(ReadError(Write("list.ply", list_header + '\xff' + std::string(12, '\0')))
+                .find("binary data ends inside element 'vertex'"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("n.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                     "property float x\nproperty float y\nend_header\n1 2\n"))
+                .find("no x, y, z"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("short.off", "OFF\n3 1 0\n0 0 0\n")).find("file ends"),
+            std::string::npos);
+  for (const char* name : {"missing.xyz", "empty.xyz", "bad.xyz", "nan.xyz", "t.ply"}) {
+    const std::string message = ReadError((directory_ / name).string());
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST_F(PointCloudIoTest, TextFromOtherToolsReadsTheSame) {
+  const energy::PointList expected = {{1, 2, 3}, {-4.5, 5e-3, 6e10}};
+  const std::string plain = "1 2 3\n-4.5 0.005 60000000000\n";
+  EXPECT_EQ(io::ReadPoints(Write("plain.xyz", plain)), expected);
+  EXPECT_EQ(io::ReadPoints(Write("bom.xyz", "\xEF\xBB\xBF" + plain)), expected);
+  EXPECT_EQ(io::ReadPoints(Write("crlf.xyz", "1 2 3\r\n-4.5 0.005 60000000000\r\n")), expected);
+  EXPECT_EQ(io::ReadPoints(Write("tabs.xyz", "# x\ty\tz\r\n1\t2\t3\n\t-4.5E0  5.0e-3\t6e+10 # a\n")),
+            expected);
+  EXPECT_EQ(io::ReadPoints(Write("bom.off", "\xEF\xBB\xBFOFF\r\n2 0 0\r\n1 2 3\r\n-4.5 5e-3 6e10\r\n")),
+            expected);
+  EXPECT_EQ(io::ReadPoints(Write("bom.ply", "\xEF\xBB\xBFply\r\nformat ascii 1.0\r\nelement vertex 2\r\n"
+                                        "property double x\r\nproperty double y\r\nproperty "
+                                        "double z\r\nend_header\r\n1 2 3\r\n-4.5 5e-3 6e10\r\n")),
+            expected);
+  EXPECT_NE(ReadError(Write("utf16.xyz", std::string("\xFF\xFE" "1\0 \0" "2\0", 8)))
+                .find("utf16.xyz:1: UTF-16 text is not supported"),
+            std::string::npos);
+}
+
+TEST_F(PointCloudIoTest, XyzExtraColumnsAreNormalsOnlyWhenUnit) {
+  const io::PointCloud with_normals =
+      io::ReadPointCloud(Write("n.xyz", "1 2 3 0 0 1\n4 5 6 0.6 0.8 0\n"));
+  ASSERT_EQ(with_normals.normals.size(), 2u);
+  EXPECT_EQ(with_normals.normals[1], energy::Point3(0.6, 0.8, 0));
+  EXPECT_EQ(with_normals.points[1], energy::Point3(4, 5, 6));
+  // Colours, a missing column on one line, or a non-unit triple: points only.
+  for (const char* text : {"1 2 3 255 0 0\n4 5 6 0 255 0\n", "1 2 3 0 0 1\n4 5 6\n",
+                           "1 2 3 0 0 1\n4 5 6 0 0 2\n"}) {
+    const io::PointCloud cloud = io::ReadPointCloud(Write("c.xyz", text));
+    EXPECT_EQ(cloud.points.size(), 2u);
+    EXPECT_TRUE(cloud.normals.empty()) << text;
+  }
+}
+
+TEST_F(PointCloudIoTest, AbandonedAtomicFileLeavesNothingBehind) {
+  const std::string path = (directory_ / "partial.ply").string();
+  {
+    io::AtomicOutputFile file(path, false);
+    file.stream() << "half";
+  }
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_TRUE(fs::is_empty(directory_));
+}
+
+}  // namespace
+}  // namespace lpd::io

@@ -1,0 +1,245 @@
+#include "tiles/tile_store.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <stdexcept>
+
+#include "io/interruption.h"
+#include "io/point_cloud_io.h"
+
+namespace lpd::tiles {
+namespace {
+
+constexpr size_t kChunkPoints = 1 << 16;  // points per read of points.bin
+constexpr uint64_t kSampleSeed = 1;
+
+// One own point's result in a tile file.
+struct Record {
+  uint32_t index;
+  double position[3];
+  float normal[3];
+  float outlier_score, feature_score;
+  uint8_t is_outlier, is_feature, kept;
+};
+constexpr size_t kRecordBytes = 4 + 24 + 12 + 8 + 3;
+
+void Pack(const Record& r, char* out) {
+  std::memcpy(out, &r.index, 4);
+  std::memcpy(out + 4, r.position, 24);
+  std::memcpy(out + 28, r.normal, 12);
+  std::memcpy(out + 40, &r.outlier_score, 4);
+  std::memcpy(out + 44, &r.feature_score, 4);
+  out[48] = static_cast<char>(r.is_outlier);
+  out[49] = static_cast<char>(r.is_feature);
+  out[50] = static_cast<char>(r.kept);
+}
+
+Record Unpack(const char* in) {
+  Record r;
+  std::memcpy(&r.index, in, 4);
+  std::memcpy(r.position, in + 4, 24);
+  std::memcpy(r.normal, in + 28, 12);
+  std::memcpy(&r.outlier_score, in + 40, 4);
+  std::memcpy(&r.feature_score, in + 44, 4);
+  r.is_outlier = static_cast<uint8_t>(in[48]);
+  r.is_feature = static_cast<uint8_t>(in[49]);
+  r.kept = static_cast<uint8_t>(in[50]);
+  return r;
+}
+
+std::string TilePath(const std::string& directory, int tile) {
+  return directory + "/tile_" + std::to_string(tile) + ".bin";
+}
+
+// Writes points to points.bin and keeps a uniform sample of them (reservoir sampling).
+class Spooler {
+ public:
+  Spooler(const std::string& directory, size_t sample_size, energy::PointList* sample)
+      : out_(directory + "/points.bin", std::ios::binary), sample_size_(sample_size),
+        sample_(sample), random_(kSampleSeed) {
+    if (!out_) throw std::runtime_error("cannot write " + directory + "/points.bin");
+    sample_->clear();
+  }
+
+  void Add(const energy::Point3& p) {
+    if (count_ >= UINT32_MAX) throw std::runtime_error("more than 2^32 - 1 points");
+    if (count_ % kChunkPoints == 0) io::ThrowIfInterrupted();
+    out_.write(reinterpret_cast<const char*>(p.data()), 3 * sizeof(double));
+    if (sample_->size() < sample_size_) {
+      sample_->push_back(p);
+    } else {
+      const size_t slot = std::uniform_int_distribution<size_t>(0, count_)(random_);
+      if (slot < sample_size_) (*sample_)[slot] = p;
+    }
+    ++count_;
+  }
+
+  size_t Finish() {
+    out_.close();
+    if (!out_) {
+      throw std::runtime_error("writing the tiles' copy of the points failed (disk full?)");
+    }
+    return count_;
+  }
+
+ private:
+  std::ofstream out_;
+  size_t sample_size_;
+  energy::PointList* sample_;
+  std::mt19937_64 random_;
+  size_t count_ = 0;
+};
+
+}  // namespace
+
+std::vector<double> TileSummary::Flatten() const {
+  return {static_cast<double>(tile),       static_cast<double>(own_points),
+          static_cast<double>(kept),       static_cast<double>(outliers),
+          static_cast<double>(features),   static_cast<double>(halo_points),
+          static_cast<double>(k),          static_cast<double>(solved_points),
+          static_cast<double>(iterations), converged ? 1.0 : 0.0,
+          seconds,                         box.min().x(),
+          box.min().y(),                   box.min().z(),
+          box.max().x(),                   box.max().y(),
+          box.max().z(),                   halo_width};
+}
+
+TileSummary TileSummary::Unflatten(const std::vector<double>& v) {
+  if (v.size() != 18) throw std::runtime_error("malformed tile summary");
+  TileSummary s;
+  s.tile = static_cast<int>(v[0]);
+  s.own_points = static_cast<long>(v[1]);
+  s.kept = static_cast<long>(v[2]);
+  s.outliers = static_cast<long>(v[3]);
+  s.features = static_cast<long>(v[4]);
+  s.halo_points = static_cast<long>(v[5]);
+  s.k = static_cast<int>(v[6]);
+  s.solved_points = static_cast<int>(v[7]);
+  s.iterations = static_cast<int>(v[8]);
+  s.converged = v[9] != 0.0;
+  s.seconds = v[10];
+  s.box = Eigen::AlignedBox3d(Eigen::Vector3d(v[11], v[12], v[13]),
+                              Eigen::Vector3d(v[14], v[15], v[16]));
+  s.halo_width = v[17];
+  return s;
+}
+
+std::string TileStore::CreateDirectory() {
+  const char* base = std::getenv("TMPDIR");
+  std::string pattern = std::string(base && *base ? base : "/tmp") + "/lpd-tiles-XXXXXX";
+  if (!mkdtemp(pattern.data())) {
+    throw std::runtime_error("cannot create a temporary directory for the tiles: " + pattern);
+  }
+  return pattern;
+}
+
+TileStore::TileStore(std::string directory, bool owner)
+    : directory_(std::move(directory)), owner_(owner) {
+  slots_.push_back(io::RegisterTemporaryFile(directory_));
+  slots_.push_back(io::RegisterTemporaryFile(directory_ + "/points.bin"));
+}
+
+TileStore::~TileStore() {
+  for (int slot : slots_) io::UnregisterTemporaryFile(slot);
+  if (!owner_ || directory_.empty()) return;
+  std::error_code ignored;
+  std::filesystem::remove_all(directory_, ignored);
+}
+
+size_t TileStore::Spool(const std::string& input, size_t sample_size, energy::PointList* sample) {
+  Spooler spooler(directory_, sample_size, sample);
+  io::ForEachPoint(input, [&](const energy::Point3& p) { spooler.Add(p); });
+  return spooler.Finish();
+}
+
+size_t TileStore::Spool(const energy::PointList& points, size_t sample_size,
+                        energy::PointList* sample) {
+  Spooler spooler(directory_, sample_size, sample);
+  for (const energy::Point3& p : points) spooler.Add(p);
+  return spooler.Finish();
+}
+
+void TileStore::Scan(const std::function<void(uint32_t, const energy::Point3&)>& visit) const {
+  std::ifstream in(directory_ + "/points.bin", std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + directory_ + "/points.bin");
+  std::vector<double> chunk(3 * kChunkPoints);
+  uint32_t index = 0;
+  while (in) {
+    in.read(reinterpret_cast<char*>(chunk.data()),
+            static_cast<std::streamsize>(chunk.size() * sizeof(double)));
+    io::ThrowIfInterrupted();
+    const size_t read = static_cast<size_t>(in.gcount()) / (3 * sizeof(double));
+    for (size_t a = 0; a < read; ++a, ++index) {
+      visit(index, energy::Point3(chunk[3 * a], chunk[3 * a + 1], chunk[3 * a + 2]));
+    }
+  }
+}
+
+void TileStore::WriteTile(int tile, const std::vector<uint32_t>& own,
+                          const solvers::TileOutcome& outcome) const {
+  slots_.push_back(io::RegisterTemporaryFile(TilePath(directory_, tile)));
+  std::ofstream out(TilePath(directory_, tile), std::ios::binary);
+  char bytes[kRecordBytes];
+  for (size_t a = 0; a < own.size(); ++a) {
+    Record r;
+    r.index = own[a];
+    for (int c = 0; c < 3; ++c) {
+      r.position[c] = outcome.projected[a][c];
+      r.normal[c] = static_cast<float>(outcome.normals[a][c]);
+    }
+    r.outlier_score = static_cast<float>(outcome.indicators.outlier_score[a]);
+    r.feature_score = static_cast<float>(outcome.indicators.feature_score[a]);
+    r.is_outlier = outcome.indicators.is_outlier[a];
+    r.is_feature = outcome.indicators.is_feature[a];
+    r.kept = outcome.kept[a];
+    Pack(r, bytes);
+    out.write(bytes, kRecordBytes);
+  }
+  out.close();
+  if (!out) throw std::runtime_error("writing " + TilePath(directory_, tile) + " failed");
+}
+
+void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSummary>& tiles,
+                      const std::string& output, bool overwrite) const {
+  size_t kept = 0;
+  for (const TileSummary& tile : tiles) kept += tile.kept;
+  std::vector<std::unique_ptr<std::ifstream>> results;
+  for (int t = 0; t < tree.num_tiles; ++t) {
+    results.push_back(std::make_unique<std::ifstream>(TilePath(directory_, t), std::ios::binary));
+    if (!*results.back()) throw std::runtime_error("missing " + TilePath(directory_, t));
+  }
+  io::PointWriter writer(output, overwrite, kept, /*with_normals=*/true,
+                     {"outlier", "outlier_score", "feature", "feature_score", "seam"},
+                     {"source_index", "tile"});
+  char bytes[kRecordBytes];
+  Scan([&](uint32_t index, const energy::Point3& p) {
+    const int t = tree.Locate(p);
+    if (!results[t]->read(bytes, kRecordBytes)) {
+      throw std::runtime_error(TilePath(directory_, t) + " ends early");
+    }
+    const Record r = Unpack(bytes);
+    if (r.index != index) throw std::runtime_error(TilePath(directory_, t) + " is out of order");
+    if (!r.kept) return;
+    bool seam = false;
+    for (const TileSummary& other : tiles) {
+      if (other.tile != t && solvers::InHalo(other.box, other.halo_width, p)) {
+        seam = true;
+        break;
+      }
+    }
+    const float scalars[] = {static_cast<float>(r.is_outlier), r.outlier_score,
+                             static_cast<float>(r.is_feature), r.feature_score,
+                             seam ? 1.0f : 0.0f};
+    const uint32_t indices[] = {index, static_cast<uint32_t>(t)};
+    writer.Write(energy::Point3(r.position[0], r.position[1], r.position[2]),
+                 energy::Point3(r.normal[0], r.normal[1], r.normal[2]), scalars, indices);
+  });
+  writer.Commit();
+}
+
+}  // namespace lpd::tiles
