@@ -7,6 +7,7 @@
 
 #include "experiments/baselines/cgal_baselines.h"
 #include "io/interruption.h"
+#include "lpd/options.h"
 #include "lpd/parameters.h"
 #include "experiments/sweep/method_parameters.h"
 #include "solvers/denoise_point_set.h"
@@ -27,31 +28,23 @@ bool DenoiseSolver(const std::string& method, solvers::Solver* solver) {
   return true;
 }
 
+// The options of a method cell: its parameters go through the same declarations as the
+// flags of `lpd denoise` (lpd/options.h); errors name the method.
 solvers::DenoiseOptions DenoiseOptionsOf(const MethodConfig& method, solvers::Solver solver) {
-  Preset preset = Preset::kDefault;
-  for (const auto& [name, value] : method.parameters) {
-    if (name == "preset" && !ParsePreset(value.text, &preset)) {
-      throw std::invalid_argument("preset of method " + method.method +
-                                  " must be default or paper, got '" + value.text + "'");
+  try {
+    std::string preset = "default";
+    for (const auto& [name, value] : method.parameters) {
+      if (name == "preset") preset = value.text;
     }
+    Options options(preset);
+    options.solver = solvers::SolverName(solver);
+    for (const auto& [name, value] : method.parameters) {
+      if (name != "preset") options.Set(name, value.text);
+    }
+    return ResolveOptions(options);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument("method " + method.method + ": " + error.what());
   }
-  solvers::DenoiseOptions options = PresetOptions(preset);
-  options.solver = solver;
-  const std::vector<std::string>& known = DenoiseParameterNames();
-  for (const auto& [name, value] : method.parameters) {
-    if (name == "preset") continue;
-    if (name != "mu_m_deg" && std::find(known.begin(), known.end(), name) == known.end()) {
-      throw std::invalid_argument("unknown parameter '" + name + "' of method " + method.method);
-    }
-    if (!DenoiseParameterApplies(name, solver)) {
-      throw std::invalid_argument("parameter " + name + " does not apply to method " +
-                                  method.method);
-    }
-    SetDenoiseParameter(name, value.text, &options);
-  }
-  std::string error;
-  if (!options.IsValid(&error)) throw std::invalid_argument(error);
-  return options;
 }
 
 MethodRun RunDenoiser(const MethodConfig& method, solvers::Solver solver,

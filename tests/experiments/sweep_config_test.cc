@@ -70,9 +70,9 @@ TEST(SweepConfig, ErrorsNameTheLineAndTheKey) {
   EXPECT_NE(LoadError("name: x\ncolour: red\n").find(":2: unknown key 'colour' in the config"),
             std::string::npos);
   const std::string base = "datasets:\n  - shape: cube\nmethods:\n  - method: lpd\n";
-  EXPECT_NE(LoadError(base + "    kk: 3\n").find(":5: unknown parameter 'kk' of method lpd"),
+  EXPECT_NE(LoadError(base + "    kk: 3\n").find(":5: method lpd: unknown parameter 'kk'"),
             std::string::npos);
-  EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: parameter k: 'x' is not an integer or auto"),
+  EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: method lpd: parameter k: 'x' is not an integer or auto"),
             std::string::npos);
   EXPECT_NE(LoadError("datasets:\n  - shape: teapot\nmethods:\n  - method: none\n")
                 .find(":2: unknown shape 'teapot'"),
