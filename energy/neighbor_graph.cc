@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "energy/point_kd_tree.h"
+#include "energy/nearest_neighbors.h"
 
 namespace lpd::energy {
 
@@ -16,31 +16,21 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
                                 " points for k = " + std::to_string(k) + ", got " +
                                 std::to_string(n));
   }
-  PointListAdaptor adaptor{points};
-  L2PointKdTree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(kKdTreeLeafSize));
-  tree.buildIndex();
-
   NeighborGraph graph;
   graph.k = k;
   graph.neighbors.resize(static_cast<size_t>(n) * k);
-#pragma omp parallel num_threads(num_threads)
-  {
-    std::vector<int> indices(k + 1);
-    std::vector<double> squared_distances(k + 1);
-#pragma omp for schedule(static)
-    for (int i = 0; i < n; ++i) {
-      nanoflann::KNNResultSet<double, int> result(k + 1);
-      result.init(indices.data(), squared_distances.data());
-      tree.findNeighbors(result, points[i].data(), nanoflann::SearchParams());
-      // Drop i itself; with duplicate points it need not come first, and it may be missing
-      // when more than k duplicates of p_i exist, in which case the farthest one is dropped.
-      int* out = graph.neighbors.data() + static_cast<size_t>(i) * k;
-      int count = 0;
-      for (int a = 0; a <= k && count < k; ++a) {
-        if (indices[a] != i) out[count++] = indices[a];
-      }
-    }
-  }
+  const NearestNeighbors search(points);
+  search.ForEach(
+      n, k + 1, num_threads, [&points](int i) { return points[i]; },
+      [&graph, k](int i, const int* nearest, const double*, int) {
+        // Drop i itself; with duplicate points it need not come first, and it may be missing
+        // when more than k duplicates of p_i exist, in which case the farthest one is dropped.
+        int* out = graph.neighbors.data() + static_cast<size_t>(i) * k;
+        int count = 0;
+        for (int a = 0; a <= k && count < k; ++a) {
+          if (nearest[a] != i) out[count++] = nearest[a];
+        }
+      });
   BuildPairs(&graph);
   return graph;
 }

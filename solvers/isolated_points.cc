@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "energy/normalization.h"
-#include "energy/point_kd_tree.h"
+#include "energy/nearest_neighbors.h"
 #include "energy/spatial_order.h"
 #include "solvers/median.h"
 
@@ -50,22 +50,14 @@ std::vector<uint8_t> FlagIsolatedPoints(const energy::PointList& points,
   }
   kept_points = std::move(in_order);
   rows = std::move(rows_in_order);
-  energy::PointListAdaptor adaptor{kept_points};
-  energy::L2PointKdTree tree(3, adaptor,
-                             nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
-  tree.buildIndex();
+  const energy::NearestNeighbors search(kept_points);
+  auto kept_point = [&kept_points](int r) { return kept_points[r]; };
   std::vector<double> squared_radius(n);
-#pragma omp parallel num_threads(num_threads)
-  {
-    std::vector<int> nearest(m + 1);
-    std::vector<double> squared_distances(m + 1);
-#pragma omp for schedule(static)
-    for (int r = 0; r < n; ++r) {
-      // The search finds the point itself first, so entry m is its m-th neighbour.
-      tree.knnSearch(kept_points[r].data(), m + 1, nearest.data(), squared_distances.data());
-      squared_radius[r] = squared_distances[m];
-    }
-  }
+  // The search finds the point itself first, so entry m is its m-th neighbour.
+  search.ForEach(n, m + 1, num_threads, kept_point,
+                 [&squared_radius, m](int r, const int*, const double* squared_distances, int) {
+                   squared_radius[r] = squared_distances[m];
+                 });
   const double squared_factor = options.radius_factor * options.radius_factor;
   std::vector<double> radii_to_reorder = squared_radius;
   const double global_limit = squared_factor * Median(&radii_to_reorder);
@@ -75,19 +67,15 @@ std::vector<uint8_t> FlagIsolatedPoints(const energy::PointList& points,
   }
   // The candidates' own neighbourhoods: a region sampled more sparsely than the rest has
   // neighbours as far apart as its points, a point off the surface has not.
-  const int count = static_cast<int>(candidates.size());
-#pragma omp parallel num_threads(num_threads)
-  {
-    std::vector<int> nearest(m + 1);
-    std::vector<double> squared_distances(m + 1), neighbor_radius(m);
-#pragma omp for schedule(dynamic, 64)
-    for (int c = 0; c < count; ++c) {
-      const int r = candidates[c];
-      tree.knnSearch(kept_points[r].data(), m + 1, nearest.data(), squared_distances.data());
-      for (int a = 1; a <= m; ++a) neighbor_radius[a - 1] = squared_radius[nearest[a]];
-      isolated[rows[r]] = squared_radius[r] > squared_factor * Median(&neighbor_radius);
-    }
-  }
+  search.ForEach(
+      static_cast<int>(candidates.size()), m + 1, num_threads,
+      [&](int c) { return kept_points[candidates[c]]; },
+      [&](int c, const int* nearest, const double*, int) {
+        std::vector<double> neighbor_radius(m);
+        for (int a = 1; a <= m; ++a) neighbor_radius[a - 1] = squared_radius[nearest[a]];
+        const int r = candidates[c];
+        isolated[rows[r]] = squared_radius[r] > squared_factor * Median(&neighbor_radius);
+      });
   return isolated;
 }
 

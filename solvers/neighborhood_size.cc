@@ -11,7 +11,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "energy/normalization.h"
-#include "energy/point_kd_tree.h"
+#include "energy/nearest_neighbors.h"
 #include "solvers/median.h"
 
 namespace lpd::solvers {
@@ -55,42 +55,39 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   const energy::Frame frame = energy::ComputeNormalizingFrame(points);
   energy::PointList normalized(n);
   for (int i = 0; i < n; ++i) normalized[i] = frame.ToNormalized(points[i]);
-  energy::PointListAdaptor adaptor{normalized};
-  energy::L2PointKdTree tree(3, adaptor,
-                             nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
-  tree.buildIndex();
+  const energy::NearestNeighbors search(normalized);
   const int k = std::min(options.probe_k, n - 1);
   const int queries = std::min(n, kMaxProbeQueries);
   std::vector<double> residuals(static_cast<size_t>(queries) * (k + 1));
   std::vector<double> alpha(queries);
-#pragma omp parallel num_threads(num_threads)
-  {
-    std::vector<int> nearest(k + 1);
-    std::vector<double> squared_distances(k + 1);
-#pragma omp for schedule(static)
-    for (int query = 0; query < queries; ++query) {
-      const int i = static_cast<int>(static_cast<int64_t>(query) * n / queries);
-      tree.knnSearch(normalized[i].data(), k + 1, nearest.data(), squared_distances.data());
-      // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];
-      mean /= k + 1;
-      Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-      double squared_sum = 0.0;
-      for (int a = 0; a <= k; ++a) {
-        const Eigen::Vector3d d = normalized[nearest[a]] - mean;
-        scatter += d * d.transpose();
-        squared_sum += (normalized[nearest[a]] - normalized[i]).squaredNorm();
-      }
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-      const Eigen::Vector3d normal = eigen.eigenvectors().col(0);
-      for (int a = 0; a <= k; ++a) {
-        residuals[static_cast<size_t>(query) * (k + 1) + a] =
-            std::abs(normal.dot(normalized[nearest[a]] - mean));
-      }
-      alpha[query] = squared_sum / k;
+  // Query q probes input point i(q), spread evenly over the (Morton-ordered) points.
+  auto point_of = [n, queries](int query) {
+    return static_cast<int>(static_cast<int64_t>(query) * n / queries);
+  };
+  auto probe = [&](int query, const int* nearest, const double*, int) {
+    const int i = point_of(query);
+    // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];
+    mean /= k + 1;
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    double squared_sum = 0.0;
+    for (int a = 0; a <= k; ++a) {
+      const Eigen::Vector3d d = normalized[nearest[a]] - mean;
+      scatter += d * d.transpose();
+      squared_sum += (normalized[nearest[a]] - normalized[i]).squaredNorm();
     }
-  }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+    const Eigen::Vector3d normal = eigen.eigenvectors().col(0);
+    for (int a = 0; a <= k; ++a) {
+      residuals[static_cast<size_t>(query) * (k + 1) + a] =
+          std::abs(normal.dot(normalized[nearest[a]] - mean));
+    }
+    alpha[query] = squared_sum / k;
+  };
+  search.ForEach(
+      queries, k + 1, num_threads, [&](int query) { return normalized[point_of(query)]; },
+      probe);
   NeighborhoodSize size;
   // 1.4826 median |residual|: sigma for Gaussian residuals (residual_statistics.h), with
   // the three degrees of freedom the fitted plane absorbs given back.

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <random>
 
-#include "energy/point_kd_tree.h"
+#include "energy/nearest_neighbors.h"
 
 namespace lpd::solvers {
 
@@ -28,10 +28,6 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
                     PointIndicators* query_indicators) {
   const int count = static_cast<int>(queries.size());
   const int neighbors = problem.k() + 1;
-  energy::PointListAdaptor adaptor{problem.points};
-  energy::L2PointKdTree tree(3, adaptor,
-                             nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
-  tree.buildIndex();
   const std::vector<double> support = PlaneSupport(v);
   const int blend = std::min(options.blended_surfaces, neighbors);
   projected->resize(count);
@@ -41,30 +37,24 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
   out.feature_score.resize(count);
   out.is_outlier.resize(count);
   out.is_feature.resize(count);
-#pragma omp parallel num_threads(num_threads)
-  {
-    std::vector<int> nearest(neighbors);
-    std::vector<double> squared_distances(neighbors);
-#pragma omp for schedule(static)
-    for (int q = 0; q < count; ++q) {
-      const energy::Point3 p = problem.frame.ToNormalized(queries[q]);
-      const int found = static_cast<int>(
-          tree.knnSearch(p.data(), neighbors, nearest.data(), squared_distances.data()));
-      Eigen::Vector3d on_surface, normal;
-      if (ProjectOntoBlend(surfaces, nearest.data(), std::min(blend, found), p, &on_surface,
-                           &normal)) {
-        (*projected)[q] = problem.frame.ToInput(on_surface);
-        (*normals)[q] = normal;
-      } else {
-        (*projected)[q] = queries[q];
-        (*normals)[q].setZero();
-      }
-      out.outlier_score[q] = OutlierScore(p, nearest.data(), found, v, support, mu_l);
-      out.is_outlier[q] = out.outlier_score[q] >= options.outlier_fraction;
-      out.feature_score[q] = indicators.feature_score[nearest[0]];
-      out.is_feature[q] = indicators.is_feature[nearest[0]];
+  const energy::NearestNeighbors search(problem.points);
+  auto query = [&problem, &queries](int q) { return problem.frame.ToNormalized(queries[q]); };
+  auto extend = [&](int q, const int* nearest, const double*, int found) {
+    const energy::Point3 p = query(q);
+    Eigen::Vector3d on_surface, normal;
+    if (ProjectOntoBlend(surfaces, nearest, std::min(blend, found), p, &on_surface, &normal)) {
+      (*projected)[q] = problem.frame.ToInput(on_surface);
+      (*normals)[q] = normal;
+    } else {
+      (*projected)[q] = queries[q];
+      (*normals)[q].setZero();
     }
-  }
+    out.outlier_score[q] = OutlierScore(p, nearest, found, v, support, mu_l);
+    out.is_outlier[q] = out.outlier_score[q] >= options.outlier_fraction;
+    out.feature_score[q] = indicators.feature_score[nearest[0]];
+    out.is_feature[q] = indicators.is_feature[nearest[0]];
+  };
+  search.ForEach(count, neighbors, num_threads, query, extend);
 }
 
 }  // namespace lpd::solvers

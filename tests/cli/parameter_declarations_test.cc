@@ -161,7 +161,9 @@ TEST(ParameterDeclarations, EachIsASweepKeyAnOptionAndAStateField) {
     for (const auto& [name, text] : saved.parameters) {
       if (name != parameter.name) continue;
       found = true;
-      if (parameter.name != "k") EXPECT_TRUE(SameValue(text, value)) << parameter.name;
+      if (parameter.name != "k") {
+        EXPECT_TRUE(SameValue(text, value)) << parameter.name;
+      }
     }
     EXPECT_TRUE(found) << parameter.name << " is not saved in a state";
   }
