@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 
@@ -74,17 +75,29 @@ double MeanDistance(const experiments::ProceduralShape& shape, const energy::Poi
 
 // One line per iteration (unless `quiet`): the energy per term, then the times of Alg. 1's
 // two steps or, for the joint solve, the elapsed time and the linear solver's iterations.
+// A pass after the first (a pass starts again at iteration 1) gets a line of its own.
 // Returns false, and so stops the solver, once a signal has arrived.
 solvers::IterationCallback ProgressPrinter(solvers::Solver solver, bool quiet) {
-  return [solver, quiet](const solvers::IterationRecord& record) {
+  auto last_iteration = std::make_shared<int>(0);
+  auto pass = std::make_shared<int>(1);
+  return [solver, quiet, last_iteration, pass](const solvers::IterationRecord& record) {
     if (quiet) return !io::InterruptionRequested();
+    if (record.iteration <= *last_iteration) {
+      std::fprintf(stderr, "pass %d: denoising the kept points again from their input\n",
+                   ++*pass);
+    }
+    *last_iteration = record.iteration;
     std::fprintf(stderr, "iter %2d  energy %.6e (fit %.3e, smooth %.3e, stitch %.3e)  ",
                  record.iteration, record.energy.total(), record.energy.fitting,
                  record.energy.smoothness, record.energy.stitching);
     if (solver == solvers::Solver::kAlternating) {
-      std::fprintf(stderr, "move %.2e  local %.3f s  global %.3f s  cg %d\n",
-                   record.point_motion, record.local_seconds, record.global_seconds,
-                   record.cg_iterations);
+      // The first iteration has no earlier output to have moved from.
+      char move[32] = "-";
+      if (!std::isnan(record.point_motion)) {
+        std::snprintf(move, sizeof(move), "%.2e", record.point_motion);
+      }
+      std::fprintf(stderr, "move %s  local %.3f s  global %.3f s  cg %d\n", move,
+                   record.local_seconds, record.global_seconds, record.cg_iterations);
     } else {
       std::fprintf(stderr, "elapsed %.3f s  linear iterations %d\n", record.elapsed_seconds,
                    record.cg_iterations);
@@ -200,16 +213,26 @@ DenoiseInput LoadInput(const std::vector<std::string>& arguments) {
   return input;
 }
 
+// The feature points among the output points (the count over all points includes removed
+// outliers).
+int KeptFeatures(const solvers::DenoiseResult& result) {
+  int count = 0;
+  for (size_t i = 0; i < result.kept.size(); ++i) {
+    count += result.kept[i] && result.indicators.is_feature[i];
+  }
+  return count;
+}
+
 // The run's summary on stdout (stderr for the solver's brief report and notes).
 void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOptions& options,
                   size_t num_input_points, size_t num_output_points) {
   std::fprintf(stderr, "%s\n", result.summary.BriefReport().c_str());
   if (!result.removal_note.empty()) std::fprintf(stderr, "note: %s\n", result.removal_note.c_str());
   std::printf(
-      "points in %zu, out %zu, outliers flagged %d (%d isolated), removed %d, feature points "
-      "%d, iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
+      "points in %zu, out %zu, outliers flagged %d (%d isolated, %d far), removed %d, feature "
+      "points %d, iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
       num_input_points, num_output_points, result.num_outliers, result.num_isolated,
-      result.num_removed, result.num_features, result.summary.num_iterations, result.passes,
+      result.num_far, result.num_removed, KeptFeatures(result), result.summary.num_iterations, result.passes,
       result.total_seconds, result.setup_seconds);
   std::string chosen;
   if (result.neighborhood.spacing > 0.0) {
@@ -218,7 +241,7 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
                   result.neighborhood.noise_sigma, result.neighborhood.spacing);
     chosen = text;
   }
-  if (static_cast<size_t>(result.solved_points) < num_input_points) {
+  if (result.subsampled) {
     chosen += " on a subsample of " + std::to_string(result.solved_points) + " points";
   }
   std::printf("k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", result.neighborhood.k,

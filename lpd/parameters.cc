@@ -420,6 +420,13 @@ std::vector<Parameter> FinalStepParameters() {
               "and over its own neighbours, is an outlier (0: off)",
               "", "0"},
              [](O& o) -> double& { return o.final_step.isolation.radius_factor; }),
+      Number("far_factor", kBoth,
+             {kOutliers,
+              "before anything else, a point farther from the cloud's median than this many "
+              "times the radius that holds 98% of the points is a stray point: an outlier, "
+              "kept out of the frame, the noise estimate and k (0: off)",
+              "", "0"},
+             [](O& o) -> double& { return o.far_points.factor; }),
       Integer("isolation_neighbors", kBoth,
               {kOutliers, "the neighbour rank of isolation_factor's test"},
               [](O& o) -> int& { return o.final_step.isolation.neighbors; }),

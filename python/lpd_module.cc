@@ -87,6 +87,7 @@ py::dict SummaryDict(const lpd::Summary& s) {
   d["output_points"] = s.output_points;
   d["outliers"] = s.outliers;
   d["isolated"] = s.isolated;
+  d["far"] = s.far;
   d["removed"] = s.removed;
   d["features"] = s.features;
   d["solved_points"] = s.solved_points;

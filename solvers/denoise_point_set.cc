@@ -8,6 +8,7 @@
 
 #include "energy/spatial_order.h"
 #include "energy/wall_clock.h"
+#include "solvers/far_points.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
 #include "solvers/sphere_projection.h"
@@ -97,7 +98,7 @@ bool DenoiseOptions::IsValid(std::string* error) const {
   if (choose_k && !neighborhood.IsValid(error)) return false;
   if (!choose_k && !problem.IsValid(error)) return false;
   if (!settings.IsValid(error) || !weights.IsValid(error) || !minimizer.IsValid(error) ||
-      !final_step.IsValid(error)) {
+      !final_step.IsValid(error) || !far_points.IsValid(error)) {
     return false;
   }
   if (solver == Solver::kCeres) {
@@ -184,6 +185,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   result.neighborhood = state.neighborhood;
   result.neighborhood.k = problem.k();  // also for a resumed state, which keeps no estimates
   result.solved_points = problem.num_points();
+  result.subsampled = !state.left_out.empty();
   const std::vector<LocalSurface> surfaces =
       options.final_step.projection == Projection::kSphere
           ? FitLocalSpheres(problem, state.variables, options.settings.num_threads)
@@ -285,6 +287,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     result.passes = pass;
     result.neighborhood = next.neighborhood;
     result.solved_points = next.solved_points;
+    result.subsampled = next.subsampled;
     removed_by_last = next.num_removed;
     last_rows = std::move(rows);
   }
@@ -311,16 +314,78 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
 
 }  // namespace
 
-DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
-                              const DenoiseHooks& hooks, const energy::PointList* normals) {
-  const Clock::time_point start = Clock::now();
+namespace {
+
+// Every stage on `points`, which hold no far points.
+DenoiseResult DenoiseNearPoints(const energy::PointList& points, const DenoiseOptions& options,
+                                const DenoiseHooks& hooks, const energy::PointList* normals) {
   DenoiseState state = StartDenoising(points, options, normals);
   if (hooks.on_started) hooks.on_started(state);
   SolverSummary summary = MinimizeFromState(options, &state, hooks.progress);
   if (hooks.on_minimized) hooks.on_minimized(state);
-  DenoiseResult result =
-      RerunWithoutOutliers(points, options, FinishDenoising(state, options, std::move(summary)),
-                           hooks.progress, normals);
+  return RerunWithoutOutliers(points, options,
+                              FinishDenoising(state, options, std::move(summary)),
+                              hooks.progress, normals);
+}
+
+// The result on the points that were not far (`rows` of the input, increasing), extended to
+// all input points: far points stay where they are, flagged as outliers with score 1.
+DenoiseResult WithFarPoints(DenoiseResult near, const std::vector<int>& rows,
+                            const energy::PointList& points, bool remove_outliers) {
+  const size_t n = points.size();
+  DenoiseResult result = std::move(near);
+  energy::PointList projected = points, normals(n, energy::Point3::Zero());
+  PointIndicators indicators;
+  indicators.outlier_score.assign(n, 1.0);
+  indicators.feature_score.assign(n, 0.0);
+  indicators.is_outlier.assign(n, 1);
+  indicators.is_feature.assign(n, 0);
+  std::vector<uint8_t> kept(n, remove_outliers ? 0 : 1);
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const int i = rows[r];
+    projected[i] = result.projected[r];
+    normals[i] = result.normals[r];
+    indicators.outlier_score[i] = result.indicators.outlier_score[r];
+    indicators.feature_score[i] = result.indicators.feature_score[r];
+    indicators.is_outlier[i] = result.indicators.is_outlier[r];
+    indicators.is_feature[i] = result.indicators.is_feature[r];
+    kept[i] = result.kept[r];
+  }
+  result.num_far = static_cast<int>(n - rows.size());
+  result.num_outliers += result.num_far;
+  if (remove_outliers) result.num_removed += result.num_far;
+  result.projected = std::move(projected);
+  result.normals = std::move(normals);
+  result.indicators = std::move(indicators);
+  result.kept = std::move(kept);
+  return result;
+}
+
+}  // namespace
+
+DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
+                              const DenoiseHooks& hooks, const energy::PointList* normals) {
+  const Clock::time_point start = Clock::now();
+  std::string error;
+  if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  const std::vector<uint8_t> far = FlagFarPoints(points, options.far_points);
+  std::vector<int> rows;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!far[i]) rows.push_back(static_cast<int>(i));
+  }
+  DenoiseResult result;
+  if (rows.size() == points.size()) {
+    result = DenoiseNearPoints(points, options, hooks, normals);
+  } else {
+    energy::PointList near_points, near_normals;
+    for (int i : rows) {
+      near_points.push_back(points[i]);
+      if (normals) near_normals.push_back((*normals)[i]);
+    }
+    result = WithFarPoints(
+        DenoiseNearPoints(near_points, options, hooks, normals ? &near_normals : nullptr), rows,
+        points, options.final_step.remove_outliers);
+  }
   result.total_seconds = SecondsSince(start);
   return result;
 }

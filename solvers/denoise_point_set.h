@@ -18,6 +18,7 @@
 #include "energy/problem.h"
 #include "solvers/alternating_minimizer.h"
 #include "solvers/ceres_joint_solver.h"
+#include "solvers/far_points.h"
 #include "solvers/final_denoising.h"
 #include "solvers/initial_state.h"
 #include "solvers/neighborhood_size.h"
@@ -53,6 +54,8 @@ struct DenoiseOptions {
   std::optional<Initialization> initialization;
   int initialization_seed = 1;               // of initialization random
   FinalDenoisingOptions final_step;          // indicators and outlier removal
+  // Stray points far from the whole cloud, set aside before the first stage (DenoisePointSet).
+  FarPointOptions far_points;
 
   Initialization EffectiveInitialization() const;
 
@@ -69,11 +72,13 @@ struct DenoiseResult {
   int num_outliers = 0;              // flagged by the indicator
   int num_removed = 0;               // actually removed
   int num_isolated = 0;              // of those, found by the isolation test
+  int num_far = 0;                   // of those, far from the whole cloud (far_points.h)
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
   NeighborhoodSize neighborhood;     // k (and its estimates when chosen) of the last pass
   int solved_points = 0;             // points in the last pass's problem (thinning.h)
+  bool subsampled = false;           // the last pass solved a subsample and extended it
   std::string removal_note;          // why flagged outliers were kept, if they were
   SolverSummary summary;
   double setup_seconds = 0.0;        // normalization and k-NN graph
@@ -123,7 +128,8 @@ struct DenoiseHooks {
   std::function<void(const DenoiseState&)> on_minimized;
 };
 
-// The pipeline, sequenced here only: StartDenoising, MinimizeFromState, FinishDenoising,
+// The pipeline, sequenced here only: the far points set aside (options.far_points; they are
+// flagged as outliers with score 1 and keep their input position), then StartDenoising, MinimizeFromState, FinishDenoising,
 // then further passes without the outliers (options.final_step.outlier_passes: while the
 // last pass removed more than rerun_removed_fraction of its points, the points it kept are
 // denoised again from their input coordinates, and their results replace the earlier ones;
