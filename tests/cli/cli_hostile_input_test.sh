@@ -107,11 +107,12 @@ accept scale_1e200 "$dir/scale_1e200.xyz"
 accept scale_1e-200 "$dir/scale_1e-200.xyz"
 accept scale_1e300_offset_1e305 "$dir/scale_1e300_offset.xyz"
 accept ply_crlf_and_bom "$dir/crlf_bom.ply"
+accept extent_overflow_from_two_far_points "$dir/overflow.xyz"
 accept ply_big_endian_double_normals_colours "$dir/big_endian_double.ply" --initialization=input_normals
 accept k_equal_to_n_minus_1 "$dir/plain.xyz" --k=1499 --max_iters=2
 # Refused inputs.
 refuse xyz_colours_as_normals 1 denoise "$dir/colours.xyz" -o out.ply --initialization=input_normals
-refuse extent_overflows 1 denoise "$dir/overflow.xyz" -o out.ply
+refuse extent_overflows 1 denoise "$dir/overflow.xyz" -o out.ply --far_factor=0
 refuse utf16_text 1 denoise "$dir/utf16.xyz" -o out.ply
 refuse line_of_200k_bytes 1 denoise "$dir/long_line.xyz" -o out.ply
 refuse dev_zero_as_xyz 1 denoise "$dir/zero.xyz" -o out.ply
