@@ -29,7 +29,7 @@ DEFINE_string(noise_model, "gaussian",
 DEFINE_string(noise_scale, "bbox_diagonal",
               "length that sigma is a fraction of: bbox_diagonal or fps_diameter (the paper's "
               "farthest-point-sampling diameter)");
-DEFINE_int32(outliers, 0, "number of uniform outliers added in the enlarged bounding box");
+DEFINE_int32(outlier_count, 0, "number of uniform outliers added in the enlarged bounding box");
 DEFINE_double(outlier_ratio, 0.0, "more outliers, as a fraction of the clean point count");
 DEFINE_double(outlier_margin, 0.05,
               "the outlier box is the bounding box enlarged by this fraction of its diagonal");
@@ -50,7 +50,7 @@ int RunNoiseCommand(const std::vector<std::string>& arguments) {
   options.model = experiments::ParseNoiseModel(FLAGS_noise_model);
   options.scale = experiments::ParseNoiseScale(FLAGS_noise_scale);
   options.sigma = FLAGS_sigma;
-  options.outlier_count = FLAGS_outliers;
+  options.outlier_count = FLAGS_outlier_count;
   options.outlier_ratio = FLAGS_outlier_ratio;
   options.outlier_margin = FLAGS_outlier_margin;
   options.seed = FLAGS_seed + 1;  // the clean samples use FLAGS_seed itself

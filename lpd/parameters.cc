@@ -398,7 +398,23 @@ std::vector<Parameter> FinalStepParameters() {
       Number("feature_fraction", kBoth,
              {kFinal, "share of feature votes above which i is a feature point", "", "0.7"},
              [](O& o) -> double& { return o.final_step.feature_fraction; }),
-      Flag("remove_outliers", kBoth, {kOutliers, "drop points flagged as outliers from the output"},
+      Choice(
+          "outliers", Kind::kChoice, kBoth,
+          {kOutliers,
+           "remove (the flagged points are left out of the output) or mark (every point is in "
+           "the output; flagged ones keep their input position, with outlier = 1 and their "
+           "score, as PDAL's outlier filter marks them)"},
+          [](const O& o) { return std::string(o.mark_outliers ? "mark" : "remove"); },
+          [](const std::string& text, O& o) {
+            if (text != "remove" && text != "mark") {
+              ThrowUnknownChoice("outliers", text, "remove, mark");
+            }
+            o.mark_outliers = text == "mark";
+          }),
+      Flag("remove_outliers", kBoth,
+           {kOutliers,
+            "false: nothing is removed or marked, and no further pass or isolation test runs "
+            "(the flagged points stay in the output, denoised like the others)"},
            [](O& o) -> bool& { return o.final_step.remove_outliers; }),
       Number("max_removed_fraction", kBoth,
              {kOutliers, "keep all points (and say so) if more than this share is flagged"},

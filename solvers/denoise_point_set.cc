@@ -361,6 +361,30 @@ DenoiseResult WithFarPoints(DenoiseResult near, const std::vector<int>& rows,
   return result;
 }
 
+// mark_outliers: every removed point back in the result at `input_points[i]`, flagged.
+void MarkRemovedPoints(const energy::PointList& input_points, DenoiseResult* result) {
+  for (size_t i = 0; i < result->kept.size(); ++i) {
+    if (result->kept[i]) continue;
+    result->kept[i] = 1;
+    result->projected[i] = input_points[i];
+    result->normals[i].setZero();
+  }
+  result->num_removed = 0;
+}
+
+// The input coordinates of a state's points, in input order: the problem's points taken
+// back out of the normalized frame, and the points left out of a subsample as they were.
+energy::PointList InputPointsOf(const DenoiseState& state) {
+  energy::PointList points(state.order.size() + state.left_out.size());
+  for (size_t r = 0; r < state.order.size(); ++r) {
+    points[state.order[r]] = state.problem.frame.ToInput(state.problem.points[r]);
+  }
+  for (size_t e = 0; e < state.left_out.size(); ++e) {
+    points[state.left_out[e]] = state.left_out_points[e];
+  }
+  return points;
+}
+
 }  // namespace
 
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
@@ -386,6 +410,7 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
         DenoiseNearPoints(near_points, options, hooks, normals ? &near_normals : nullptr), rows,
         points, options.final_step.remove_outliers);
   }
+  if (options.mark_outliers) MarkRemovedPoints(points, &result);
   result.total_seconds = SecondsSince(start);
   return result;
 }
@@ -396,6 +421,7 @@ DenoiseResult ContinueDenoising(DenoiseState state, const DenoiseOptions& option
   SolverSummary summary = MinimizeFromState(options, &state, hooks.progress);
   if (hooks.on_minimized) hooks.on_minimized(state);
   DenoiseResult result = FinishDenoising(state, options, std::move(summary));
+  if (options.mark_outliers) MarkRemovedPoints(InputPointsOf(state), &result);
   result.total_seconds = SecondsSince(start);
   return result;
 }

@@ -56,6 +56,9 @@ struct DenoiseOptions {
   FinalDenoisingOptions final_step;          // indicators and outlier removal
   // Stray points far from the whole cloud, set aside before the first stage (DenoisePointSet).
   FarPointOptions far_points;
+  // Keep every point in the result: those the passes removed get kept = 1 back, at their
+  // input position with a zero normal, still flagged (is_outlier) with their score.
+  bool mark_outliers = false;
 
   Initialization EffectiveInitialization() const;
 
@@ -67,7 +70,8 @@ struct DenoiseResult {
   energy::PointList projected;       // p_i projected onto t_i
   energy::PointList normals;         // unit normal of t_i (zero if undefined)
   PointIndicators indicators;
-  // True for the points that are in the output (not removed as outliers).
+  // True for the points that are in the output (not removed as outliers; all of them with
+  // mark_outliers).
   std::vector<uint8_t> kept;
   int num_outliers = 0;              // flagged by the indicator
   int num_removed = 0;               // actually removed

@@ -40,7 +40,7 @@ expect_error noise_negative_sigma noise --shape=cube --sigma=-1 -o out.ply
 expect_error metrics_no_ground_truth metrics "$dir/none.ply"
 
 # Labels survive: 100 labelled outliers are all accounted for (found + missed = 100).
-"$lpd" noise --shape=cube --points=6000 --sigma=0.002 --outliers=100 -o "$dir/noisy.ply" >/dev/null ||
+"$lpd" noise --shape=cube --points=6000 --sigma=0.002 --outlier_count=100 -o "$dir/noisy.ply" >/dev/null ||
   fail "lpd noise failed"
 "$lpd" denoise "$dir/noisy.ply" -o "$dir/out.ply" --quiet --mu_l=4.2e-5 >/dev/null 2>&1 ||
   fail "lpd denoise failed"

@@ -111,7 +111,7 @@ std::string OtherValue(const ParameterInfo& parameter, const solvers::DenoiseOpt
   static const std::pair<const char*, const char*> kChoices[] = {
       {"initialization", "plane_fit"}, {"gnc", "mu_l"}, {"preconditioner", "jacobi"},
       {"projection", "plane"}, {"ceres_orientations", "closed_form"},
-      {"ceres_linear_solver", "cgnr"}};
+      {"ceres_linear_solver", "cgnr"}, {"outliers", "mark"}};
   for (const auto& [name, value] : kChoices) {
     if (parameter.name == name) return value;
   }

@@ -157,5 +157,35 @@ TEST(DenoisePointSet, DegenerateInputsGiveFiniteResultsOrClearErrors) {
                std::invalid_argument);
 }
 
+// mark_outliers: the same run as removal, with every removed point back at its input
+// position, still flagged; the points removal keeps are the same bit for bit.
+TEST(DenoisePointSet, MarkingKeepsEveryPointAndTheRemovedOnesWhereTheyWere) {
+  PointList input = testing::NoisyPlane(3000, 0.005, 4);
+  std::mt19937_64 random(4);
+  std::uniform_real_distribution<double> uniform(-0.5, 1.5);
+  for (int i = 0; i < 150; ++i) input.emplace_back(uniform(random), uniform(random), uniform(random));
+  input.emplace_back(1e7, 0.0, 0.0);  // and a far point
+  DenoiseOptions options = PresetOptions(Preset::kDefault);
+  options.minimizer.max_iterations = 10;
+  options.settings.num_threads = 2;
+  const DenoiseResult removed = DenoisePointSet(input, options);
+  options.mark_outliers = true;
+  const DenoiseResult marked = DenoisePointSet(input, options);
+  ASSERT_GT(removed.num_removed, 100);
+  EXPECT_EQ(marked.num_removed, 0);
+  EXPECT_EQ(marked.num_outliers, removed.num_outliers);
+  for (size_t i = 0; i < input.size(); ++i) {
+    ASSERT_TRUE(marked.kept[i]);
+    EXPECT_EQ(marked.indicators.is_outlier[i], removed.indicators.is_outlier[i]);
+    if (removed.kept[i]) {
+      EXPECT_EQ(marked.projected[i], removed.projected[i]);
+    } else {
+      EXPECT_TRUE(marked.indicators.is_outlier[i]);
+      EXPECT_EQ(marked.projected[i], input[i]);
+      EXPECT_EQ(marked.normals[i], Point3::Zero());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lpd::solvers
