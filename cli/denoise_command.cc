@@ -13,8 +13,10 @@
 #include "cli/commands.h"
 #include "energy/wall_clock.h"
 #include "cli/denoise_flags.h"
+#include "cli/run_summary.h"
 #include "tiles/tiled_denoise.h"
 #include "io/atomic_output_file.h"
+#include "lpd/denoise.h"
 #include "io/interruption.h"
 #include "io/point_cloud_io.h"
 #include "experiments/shapes/noise.h"
@@ -33,6 +35,10 @@ DEFINE_string(resume, "",
               "--max_iters more iterations; with the saved thread count the result is the "
               "same bit for bit as one uninterrupted run; no second outlier pass or "
               "isolation test (they need the input); also --resume=FILE");
+DEFINE_string(summary_json, "",
+              "also write what the run did to this JSON file: the parameters given and in "
+              "effect, k, noise and spacing, the weights used, every pass, counts, times and "
+              "the version");
 DEFINE_bool(quiet, false, "do not print per-iteration progress");
 DEFINE_bool(trace, false, "print the energy per term after every block update at the end");
 DEFINE_uint64(seed, 1, "random seed of generated samples (and, plus one, of their noise)");
@@ -130,7 +136,10 @@ io::PointCloud MakeOutputCloud(const solvers::DenoiseResult& result) {
 
 // The options and state a resumed run continues from, with the flags applied.
 solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
-  for (const char* fixed : {"k", "initialization", "initialization_seed"}) {
+  // What made the saved problem and start cannot change now (and the preset would only
+  // restate parameters the state already fixes).
+  for (const char* fixed : {"k", "k_radius_sigmas", "max_k", "max_problem_size", "far_factor",
+                            "initialization", "initialization_seed", "preset"}) {
     if (FlagGiven(fixed)) {
       throw std::invalid_argument(std::string("--") + fixed +
                                   " cannot change on --resume (the state fixes it)");
@@ -156,8 +165,14 @@ solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
 
 // True when `a` and `b` name the same file (also through another spelling or a link).
 bool SameFile(const std::string& a, const std::string& b) {
-  std::error_code error;
-  return a == b || std::filesystem::equivalent(a, b, error);
+  std::error_code error, error_a, error_b;
+  if (a == b || std::filesystem::equivalent(a, b, error)) return true;
+  // Files that do not exist yet: the same absolute path ("./s.xyz" and "s.xyz").
+  const std::filesystem::path canonical_a =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(a, error_a), error_a);
+  const std::filesystem::path canonical_b =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(b, error_b), error_b);
+  return !error_a && !error_b && canonical_a == canonical_b;
 }
 
 // Refuses, before any work, outputs that would replace an input, collide, have no known
@@ -170,8 +185,24 @@ void CheckOutputs(const std::string& input, bool resume) {
                           !updates_state))) {
     throw std::invalid_argument("output " + input + " is also an input (refusing to overwrite it)");
   }
-  if (!FLAGS_output.empty() && FLAGS_output == FLAGS_save_state) {
-    throw std::invalid_argument("-o and --save_state name the same file");
+  const std::pair<const char*, const std::string*> outputs[] = {
+      {"-o", &FLAGS_output}, {"--save_state", &FLAGS_save_state},
+      {"--summary_json", &FLAGS_summary_json}};
+  for (size_t a = 0; a < std::size(outputs); ++a) {
+    for (size_t b = a + 1; b < std::size(outputs); ++b) {
+      if (!outputs[a].second->empty() && !outputs[b].second->empty() &&
+          SameFile(*outputs[a].second, *outputs[b].second)) {
+        throw std::invalid_argument(std::string(outputs[a].first) + " and " +
+                                    outputs[b].first + " name the same file");
+      }
+    }
+  }
+  if (!FLAGS_summary_json.empty()) {
+    if (!input.empty() && SameFile(FLAGS_summary_json, input)) {
+      throw std::invalid_argument("output " + input +
+                                  " is also an input (refusing to overwrite it)");
+    }
+    io::RefuseExistingOutput(FLAGS_summary_json, FLAGS_overwrite);
   }
   if (!FLAGS_output.empty()) {
     const std::string extension = io::FileExtension(FLAGS_output);
@@ -348,12 +379,25 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   result.total_seconds = SecondsSince(start);
   if (FLAGS_trace) std::fprintf(stderr, "%s", result.summary.FullReport().c_str());
 
-  const io::PointCloud cloud = MakeOutputCloud(result);
+  RunDescription run;
+  run.version = Version();
+  run.input = resume ? FLAGS_resume : arguments.empty() ? "built-in box" : arguments[0];
+  run.output = FLAGS_output;
+  run.preset = FLAGS_preset;
+  run.given = GivenParameters();
+  io::PointCloud cloud = MakeOutputCloud(result);
+  cloud.comments = RunHeaderComments(run, options, result);
   if (!FLAGS_output.empty()) io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
+  if (!FLAGS_summary_json.empty()) {
+    io::AtomicOutputFile summary(FLAGS_summary_json, FLAGS_overwrite);
+    summary.stream() << RunSummaryJson(run, options, result, cloud.points.size()) << "\n";
+    summary.Commit();
+  }
   PrintSummary(result, options, result.projected.size(), cloud.points.size());
   if (input.is_built_in) PrintBuiltInDistance(input.built_in, cloud.points);
   if (!FLAGS_save_state.empty()) std::printf("saved state %s\n", FLAGS_save_state.c_str());
   if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());
+  if (!FLAGS_summary_json.empty()) std::printf("wrote %s\n", FLAGS_summary_json.c_str());
   return 0;
 }
 

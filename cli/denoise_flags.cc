@@ -72,17 +72,6 @@ bool RegisterParameterFlags() {
 
 const bool kParameterFlagsRegistered = RegisterParameterFlags();
 
-// The parameters given on the command line, as (name, value) in declaration order.
-std::vector<std::pair<std::string, std::string>> GivenParameters() {
-  std::vector<std::pair<std::string, std::string>> given;
-  for (const ParameterInfo& parameter : DenoiseParameters()) {
-    const gflags::CommandLineFlagInfo flag =
-        gflags::GetCommandLineFlagInfoOrDie(parameter.name.c_str());
-    if (!flag.is_default) given.emplace_back(parameter.name, flag.current_value);
-  }
-  return given;
-}
-
 // A weight given outright under the default preset replaces the value derived from the data;
 // the paper's raw values (lambda = 1, eta = 5000, mu_l = 5e-9) belong to the paper's
 // normalization and neighbourhoods, and give far worse results under the default's.
@@ -103,6 +92,16 @@ void WarnAboutRawWeights(const std::vector<std::pair<std::string, std::string>>&
 }
 
 }  // namespace
+
+std::vector<std::pair<std::string, std::string>> GivenParameters() {
+  std::vector<std::pair<std::string, std::string>> given;
+  for (const ParameterInfo& parameter : DenoiseParameters()) {
+    const gflags::CommandLineFlagInfo flag =
+        gflags::GetCommandLineFlagInfoOrDie(parameter.name.c_str());
+    if (!flag.is_default) given.emplace_back(parameter.name, flag.current_value);
+  }
+  return given;
+}
 
 bool FlagGiven(const char* name) { return !gflags::GetCommandLineFlagInfoOrDie(name).is_default; }
 

@@ -14,6 +14,7 @@
 #include "solvers/denoise_point_set.h"
 
 DECLARE_int32(threads);
+DECLARE_string(preset);
 
 namespace lpd::cli {
 
@@ -26,6 +27,9 @@ solvers::DenoiseOptions DenoiseOptionsFromFlags(
 // --help's list of the denoiser's parameters, grouped, each with its default, its data rule
 // and the paper's value.
 void PrintParameterHelp();
+
+// The parameters given on the command line, as (name, value) in declaration order.
+std::vector<std::pair<std::string, std::string>> GivenParameters();
 
 // True if flag `name` was given on the command line.
 bool FlagGiven(const char* name);

@@ -186,6 +186,9 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   result.neighborhood.k = problem.k();  // also for a resumed state, which keeps no estimates
   result.solved_points = problem.num_points();
   result.subsampled = !state.left_out.empty();
+  result.pass_summaries = {{static_cast<int>(state.order.size() + state.left_out.size()),
+                            problem.num_points(), problem.k(), result.summary.num_iterations,
+                            result.summary.termination}};
   const std::vector<LocalSurface> surfaces =
       options.final_step.projection == Projection::kSphere
           ? FitLocalSpheres(problem, state.variables, options.settings.num_threads)
@@ -288,6 +291,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     result.neighborhood = next.neighborhood;
     result.solved_points = next.solved_points;
     result.subsampled = next.subsampled;
+    result.pass_summaries.push_back(next.pass_summaries.front());
     removed_by_last = next.num_removed;
     last_rows = std::move(rows);
   }

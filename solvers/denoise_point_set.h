@@ -65,6 +65,15 @@ struct DenoiseOptions {
   bool IsValid(std::string* error) const;
 };
 
+// One denoising pass: its problem and how its minimization ended.
+struct PassSummary {
+  int points = 0;       // in the pass's input (before any subsample)
+  int solved_points = 0;
+  int k = 0;
+  int iterations = 0;
+  TerminationType termination = TerminationType::kFailure;
+};
+
 struct DenoiseResult {
   // One entry per input point, in input order and frame.
   energy::PointList projected;       // p_i projected onto t_i
@@ -80,6 +89,7 @@ struct DenoiseResult {
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
+  std::vector<PassSummary> pass_summaries;  // one per pass, in order
   NeighborhoodSize neighborhood;     // k (and its estimates when chosen) of the last pass
   int solved_points = 0;             // points in the last pass's problem (thinning.h)
   bool subsampled = false;           // the last pass solved a subsample and extended it

@@ -10,26 +10,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include "io/atomic_output_file.h"
+#include "io/json.h"
 
 namespace lpd::experiments {
 namespace {
-
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof(escaped), "\\u%04x", c);
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
 
 std::string CsvField(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -68,8 +52,8 @@ std::string ResultRecord::ToJson() const {
   std::string json = "{";
   for (size_t f = 0; f < fields_.size(); ++f) {
     const auto& [key, text] = fields_[f];
-    json += (f ? ", " : "") + JsonString(key) + ": ";
-    json += is_number_[f] ? (text.empty() ? "null" : text) : JsonString(text);
+    json += (f ? ", " : "") + io::JsonString(key) + ": ";
+    json += is_number_[f] ? (text.empty() ? "null" : text) : io::JsonString(text);
   }
   return json + "}";
 }

@@ -55,6 +55,28 @@ missed=$(echo "$line" | sed -E 's/.*missed ([0-9]+).*/\1/')
 [ "$found" -ge 50 ] || fail "outlier recall too low: $line"
 echo "ok   labels survive: $line"
 
+# --summary_json: counts that match the output file, every pass, the parameters given; and
+# the output's header names the version and the parameters.
+"$lpd" denoise "$dir/noisy.ply" -o "$dir/summarized.ply" --quiet --max_iters=8 --outliers=mark \
+  --summary_json="$dir/summary.json" >/dev/null 2>&1 || fail "denoise --summary_json failed"
+python3 - "$dir/summary.json" "$dir/summarized.ply" <<'PY' || fail "summary does not match the output"
+import json, sys
+summary = json.load(open(sys.argv[1]))
+header = open(sys.argv[2], "rb").read().split(b"end_header")[0].decode()
+vertices = int(next(l.split()[2] for l in header.splitlines() if l.startswith("element vertex")))
+counts = summary["counts"]
+assert counts["output_points"] == vertices == counts["input_points"], (counts, vertices)
+assert counts["removed"] == 0 and counts["outliers_flagged"] > 0, counts
+assert summary["parameters_given"] == {"max_iters": "8", "outliers": "mark"}, summary
+assert summary["parameters"]["outliers"] == "mark" and summary["derived"]["k"] >= 12
+assert len(summary["passes"]) == 1 and summary["passes"][0]["iterations"] <= 8
+assert "comment lpd parameters preset=default" in header and "outliers=mark" in header
+assert "comment lpd derived k=" in header
+print("ok   summary_json:", counts)
+PY
+expect_error summary_json_is_output denoise "$dir/noisy.ply" -o s.ply --summary_json=./s.ply
+expect_error state_is_output denoise "$dir/noisy.ply" -o ./s.xyz --save_state=s.xyz
+
 # The smoke sweep: one row per cell, every metric present and finite, resumable.
 if ! "$lpd" sweep "$smoke" --results_dir="$dir/smoke" >"$dir/sweep.txt" 2>"$dir/sweep.err"; then
   fail "smoke sweep failed: $(tail -3 "$dir/sweep.err")"
