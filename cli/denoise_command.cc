@@ -25,6 +25,12 @@
 #include "solvers/denoise_point_set.h"
 
 DEFINE_string(output, "", "output file (.ply with normals and indicators, or .xyz); also -o");
+DEFINE_string(input_format, "",
+              "format of INPUT (xyz, ply, off, obj) when its extension does not say it; needed "
+              "for '-', standard input");
+DEFINE_string(output_format, "",
+              "format of OUTPUT (ply, xyz) when its extension does not say it; needed for "
+              "'-o -', standard output (the summary then goes to stderr)");
 DEFINE_bool(overwrite, false, "replace OUTPUT (and the --save_state file) if it already exists");
 DEFINE_string(save_state, "",
               "after the iterations, save the optimizer's state (H, T, L, M, S, the k-NN "
@@ -165,6 +171,7 @@ solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
 
 // True when `a` and `b` name the same file (also through another spelling or a link).
 bool SameFile(const std::string& a, const std::string& b) {
+  if (a == io::kStandardStream || b == io::kStandardStream) return false;  // stdin, stdout
   std::error_code error, error_a, error_b;
   if (a == b || std::filesystem::equivalent(a, b, error)) return true;
   // Files that do not exist yet: the same absolute path ("./s.xyz" and "s.xyz").
@@ -205,11 +212,7 @@ void CheckOutputs(const std::string& input, bool resume) {
     io::RefuseExistingOutput(FLAGS_summary_json, FLAGS_overwrite);
   }
   if (!FLAGS_output.empty()) {
-    const std::string extension = io::FileExtension(FLAGS_output);
-    if (extension != "ply" && extension != "xyz" && extension != "txt") {
-      throw std::invalid_argument("output extension must be .ply, .xyz or .txt: " +
-                                  FLAGS_output);
-    }
+    io::OutputFormat(FLAGS_output, FLAGS_output_format);
     io::RefuseExistingOutput(FLAGS_output, FLAGS_overwrite);
   }
   if (!FLAGS_save_state.empty()) io::RefuseExistingOutput(FLAGS_save_state, FLAGS_overwrite);
@@ -228,7 +231,7 @@ struct DenoiseInput {
 DenoiseInput LoadInput(const std::vector<std::string>& arguments) {
   DenoiseInput input;
   if (!arguments.empty()) {
-    io::PointCloud cloud = io::ReadPointCloud(arguments[0]);
+    io::PointCloud cloud = io::ReadPointCloud(arguments[0], FLAGS_input_format);
     input.points = std::move(cloud.points);
     input.normals = std::move(cloud.normals);
     return input;
@@ -254,12 +257,15 @@ int KeptFeatures(const solvers::DenoiseResult& result) {
   return count;
 }
 
+// Where the summary goes: stdout, or stderr when stdout carries the output ("-o -").
+std::FILE* Report() { return FLAGS_output == io::kStandardStream ? stderr : stdout; }
+
 // The run's summary on stdout (stderr for the solver's brief report and notes).
 void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOptions& options,
                   size_t num_input_points, size_t num_output_points) {
   std::fprintf(stderr, "%s\n", result.summary.BriefReport().c_str());
   if (!result.removal_note.empty()) std::fprintf(stderr, "note: %s\n", result.removal_note.c_str());
-  std::printf(
+  std::fprintf(Report(), 
       "points in %zu, out %zu, outliers flagged %d (%d isolated, %d far), removed %d, feature "
       "points %d, iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
       num_input_points, num_output_points, result.num_outliers, result.num_isolated,
@@ -275,11 +281,11 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
   if (result.subsampled) {
     chosen += " on a subsample of " + std::to_string(result.solved_points) + " points";
   }
-  std::printf("k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", result.neighborhood.k,
+  std::fprintf(Report(), "k %d%s, eta %.4g, lambda %.4g, mu_l %.4g, mu_m %.4g\n", result.neighborhood.k,
               chosen.c_str(), result.summary.eta, result.summary.lambda, result.summary.mu_l,
               options.settings.energy.mu_m);
   if (options.final_step.snap_features) {
-    std::printf("feature points snapped: %d onto edges, %d at corners, %d left on their plane\n",
+    std::fprintf(Report(), "feature points snapped: %d onto edges, %d at corners, %d left on their plane\n",
                 result.snapping.snapped_to_edge, result.snapping.snapped_at_corner,
                 result.snapping.left_on_plane);
   }
@@ -290,7 +296,7 @@ void PrintBuiltInDistance(const DefaultInput& built_in, const energy::PointList&
   const double diagonal = built_in.diagonal;
   const double before = MeanDistance(built_in.shape, built_in.points);
   const double after = MeanDistance(built_in.shape, output);
-  std::printf(
+  std::fprintf(Report(), 
       "mean distance to the clean box: input %.3e, output %.3e (/diagonal: %.3e -> %.3e, "
       "%.1fx %s)\n",
       before, after, before / diagonal, after / diagonal,
@@ -306,17 +312,17 @@ int RunTiled(const std::vector<std::string>& arguments, const solvers::DenoiseOp
       tiles::DenoiseInTiles(arguments.empty() ? "" : arguments[0], built_in.points, options, tiling,
                      FLAGS_output, FLAGS_overwrite, FlagGiven("threads"), FLAGS_quiet);
   if (!run.is_root) return 0;
-  std::printf(
+  std::fprintf(Report(), 
       "points in %zu, out %ld, outliers flagged %ld, removed %ld, feature points %ld, "
       "time %.2f s\n",
       run.num_points, run.kept, run.outliers, static_cast<long>(run.num_points) - run.kept,
       run.features, run.seconds);
-  std::printf("tiles %d on %d process%s x %d thread%s, halo points %ld, k %d-%d, at most %d "
+  std::fprintf(Report(), "tiles %d on %d process%s x %d thread%s, halo points %ld, k %d-%d, at most %d "
               "iterations, %d of %d tiles converged\n",
               run.tiles, run.ranks, run.ranks > 1 ? "es" : "", run.threads_per_rank,
               run.threads_per_rank > 1 ? "s" : "", run.halo_points, run.min_k, run.max_k,
               run.max_iterations, run.converged_tiles, run.tiles);
-  if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());
+  if (!FLAGS_output.empty()) std::fprintf(Report(), "wrote %s\n", FLAGS_output.c_str());
   return 0;
 }
 
@@ -349,6 +355,13 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   if (tiling.tile_points > 0) {
     if (resume || !FLAGS_save_state.empty()) {
       throw std::invalid_argument("--tile_points cannot be combined with --save_state or --resume");
+    }
+    if ((!arguments.empty() && arguments[0] == io::kStandardStream) ||
+        FLAGS_output == io::kStandardStream || !FLAGS_input_format.empty() ||
+        !FLAGS_output_format.empty()) {
+      throw std::invalid_argument(
+          "--tile_points reads and writes named files with their extensions (no '-', "
+          "--input_format or --output_format)");
     }
     if (options.EffectiveInitialization() == solvers::Initialization::kInputNormals) {
       throw std::invalid_argument(
@@ -387,7 +400,9 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   run.given = GivenParameters();
   io::PointCloud cloud = MakeOutputCloud(result);
   cloud.comments = RunHeaderComments(run, options, result);
-  if (!FLAGS_output.empty()) io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
+  if (!FLAGS_output.empty()) {
+    io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite, FLAGS_output_format);
+  }
   if (!FLAGS_summary_json.empty()) {
     io::AtomicOutputFile summary(FLAGS_summary_json, FLAGS_overwrite);
     summary.stream() << RunSummaryJson(run, options, result, cloud.points.size()) << "\n";
@@ -395,9 +410,9 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   }
   PrintSummary(result, options, result.projected.size(), cloud.points.size());
   if (input.is_built_in) PrintBuiltInDistance(input.built_in, cloud.points);
-  if (!FLAGS_save_state.empty()) std::printf("saved state %s\n", FLAGS_save_state.c_str());
-  if (!FLAGS_output.empty()) std::printf("wrote %s\n", FLAGS_output.c_str());
-  if (!FLAGS_summary_json.empty()) std::printf("wrote %s\n", FLAGS_summary_json.c_str());
+  if (!FLAGS_save_state.empty()) std::fprintf(Report(), "saved state %s\n", FLAGS_save_state.c_str());
+  if (!FLAGS_output.empty()) std::fprintf(Report(), "wrote %s\n", FLAGS_output.c_str());
+  if (!FLAGS_summary_json.empty()) std::fprintf(Report(), "wrote %s\n", FLAGS_summary_json.c_str());
   return 0;
 }
 

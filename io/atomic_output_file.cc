@@ -36,6 +36,7 @@ void RefuseToReplace(const std::string& path, bool overwrite) {
 }  // namespace
 
 void RefuseExistingOutput(const std::string& path, bool overwrite) {
+  if (path == kStandardStream) return;
   RefuseToReplace(path, overwrite);
   std::error_code error;
   fs::path directory = fs::path(path).parent_path();
@@ -56,8 +57,14 @@ void RefuseExistingOutput(const std::string& path, bool overwrite) {
 }
 
 AtomicOutputFile::AtomicOutputFile(const std::string& path, bool overwrite) : path_(path) {
-  RefuseToReplace(path, overwrite);  // creating the temporary file tests the directory
-  temporary_path_ = path + ".tmp." + std::to_string(::getpid());
+  if (path == kStandardStream) {
+    // Held in a temporary file until complete, so that a failed run writes nothing.
+    temporary_path_ =
+        (fs::temp_directory_path() / ("lpd-stdout." + std::to_string(::getpid()))).string();
+  } else {
+    RefuseToReplace(path, overwrite);  // creating the temporary file tests the directory
+    temporary_path_ = path + ".tmp." + std::to_string(::getpid());
+  }
   slot_ = RegisterTemporaryFile(temporary_path_);
   stream_.open(temporary_path_, std::ios::binary | std::ios::trunc);
   if (!stream_) {
@@ -83,10 +90,29 @@ void AtomicOutputFile::Commit() {
     throw std::runtime_error("error while writing " + path_ +
                              " (disk full or device error); nothing was written");
   }
+  if (path_ == kStandardStream) {
+    CopyToStandardOutput();
+    return;  // not committed: the destructor removes the temporary file
+  }
   if (std::rename(temporary_path_.c_str(), path_.c_str()) != 0) {
     throw std::runtime_error("cannot move the output into place at " + path_);
   }
   committed_ = true;
+}
+
+void AtomicOutputFile::CopyToStandardOutput() const {
+  std::FILE* file = std::fopen(temporary_path_.c_str(), "rb");
+  if (!file) throw std::runtime_error("cannot reopen the output held for standard output");
+  char buffer[1 << 16];
+  size_t count;
+  bool good = true;
+  while ((count = std::fread(buffer, 1, sizeof(buffer), file)) > 0) {
+    good = good && std::fwrite(buffer, 1, count, stdout) == count;
+  }
+  std::fclose(file);
+  if (!good || std::fflush(stdout) != 0) {
+    throw std::runtime_error("error while writing to standard output");
+  }
 }
 
 }  // namespace lpd::io

@@ -3,7 +3,8 @@
 // Data goes to a temporary file beside the target; Commit() renames it into place. If the
 // object is destroyed without Commit() (an error, an exception), the temporary file is
 // removed, so a failed run never leaves a half-written output; an interrupted one neither
-// (interruption.h). An existing target is refused unless `overwrite` is set.
+// (interruption.h). An existing target is refused unless `overwrite` is set. The target "-"
+// is standard output: the data is held in a temporary file and copied there on Commit().
 #ifndef LPD_IO_ATOMIC_OUTPUT_FILE_H_
 #define LPD_IO_ATOMIC_OUTPUT_FILE_H_
 
@@ -11,6 +12,9 @@
 #include <string>
 
 namespace lpd::io {
+
+// The file name of standard input and output ("-").
+inline constexpr const char* kStandardStream = "-";
 
 // Throws std::runtime_error if `path` exists and !overwrite, exists and is not a regular
 // file, or its directory is missing or not writable. Commands call it before their work, so
@@ -30,6 +34,8 @@ class AtomicOutputFile {
   void Commit();
 
  private:
+  void CopyToStandardOutput() const;
+
   std::string path_;
   std::string temporary_path_;
   std::ofstream stream_;

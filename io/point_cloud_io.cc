@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <functional>
 #include <memory>
 #include <sstream>
@@ -27,17 +28,30 @@ using energy::PointList;
 }
 
 // Moves `in` past a UTF-8 byte-order mark (which Windows editors write); UTF-16 text is
-// refused by name rather than as a malformed first line.
+// refused by name rather than as a malformed first line. Looks at one byte at a time without
+// consuming it, so that pipes and devices, which cannot seek back, lose nothing.
 void SkipByteOrderMark(const std::string& path, std::istream& in) {
-  char head[3] = {0, 0, 0};
-  in.read(head, 3);
-  const std::string start(head, static_cast<size_t>(in.gcount()));
-  in.clear();
-  if (start == "\xEF\xBB\xBF") return;
-  if (start.rfind("\xFF\xFE", 0) == 0 || start.rfind("\xFE\xFF", 0) == 0) {
-    Fail(path, 1, "UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
+  std::streambuf* buffer = in.rdbuf();
+  const int first = buffer->sgetc();
+  if (first == 0xEF) {
+    buffer->sbumpc();
+    if (buffer->sgetc() == 0xBB) {
+      buffer->sbumpc();
+      if (buffer->sgetc() == 0xBF) {
+        buffer->sbumpc();
+        return;
+      }
+    }
+    Fail(path, 1, "starts with a broken UTF-8 byte-order mark (not a text point file?)");
   }
-  in.seekg(0);
+  if (first == 0xFF || first == 0xFE) {
+    buffer->sbumpc();
+    const int second = buffer->sgetc();
+    if ((first == 0xFF && second == 0xFE) || (first == 0xFE && second == 0xFF)) {
+      Fail(path, 1, "UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
+    }
+    Fail(path, 1, "starts with a byte that no text or PLY file starts with");
+  }
 }
 
 // Longer lines are refused rather than buffered: a text file has short lines, and a device
@@ -279,12 +293,18 @@ void CheckPlyCountsFitBody(const std::string& path, PlyFormat format,
                            const std::vector<PlyElement>& elements, std::istream* in) {
   uint64_t body_bytes = 0;  // a header that ends the file leaves an empty body
   if (!in->eof()) {
+    // A pipe or device cannot seek (and a failed seek would drop its buffered bytes): the
+    // reads check as they go.
     const std::streampos body_start = in->tellg();
+    if (body_start < 0) {
+      in->clear();
+      return;
+    }
     in->seekg(0, std::ios::end);
     const std::streampos end = in->tellg();
     in->clear();
     in->seekg(body_start);
-    if (body_start < 0 || end < body_start) return;  // not seekable: the reads check as they go
+    if (end < body_start) return;
     body_bytes = static_cast<uint64_t>(end - body_start);
   }
   uint64_t needed = 0;
@@ -521,6 +541,16 @@ std::string FileExtension(const std::string& path) {
 
 namespace {
 
+// The format of `path`: `format` when given, else its extension; "-" needs `format`.
+std::string InputFormat(const std::string& path, const std::string& format) {
+  if (!format.empty()) return format;
+  if (path == kStandardStream) {
+    throw std::runtime_error("reading standard input ('-') needs --input_format (xyz, ply, off "
+                             "or obj)");
+  }
+  return FileExtension(path);
+}
+
 // The file at `path` opened for reading, or a one-line error naming why it cannot be.
 std::ifstream OpenInput(const std::string& path) {
   if (path.empty()) throw std::runtime_error("the input file name is empty");
@@ -533,9 +563,11 @@ std::ifstream OpenInput(const std::string& path) {
 
 }  // namespace
 
-PointCloud ReadPointCloud(const std::string& path) {
+PointCloud ReadPointCloud(const std::string& path, const std::string& format) {
+  const std::string extension = InputFormat(path, format);
+  if (path == kStandardStream) return ReadPointCloud(std::cin, extension, "standard input");
   std::ifstream in = OpenInput(path);
-  return ReadPointCloud(in, FileExtension(path), path);
+  return ReadPointCloud(in, extension, path);
 }
 
 PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
@@ -598,21 +630,26 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
   if (count == 0) Fail(path, 0, kNoPoints);
 }
 
+std::string OutputFormat(const std::string& path, const std::string& format) {
+  const std::string chosen = format.empty() ? FileExtension(path) : format;
+  if (chosen == "ply" || chosen == "xyz" || chosen == "txt") return chosen;
+  if (path == kStandardStream && format.empty()) {
+    throw std::runtime_error("writing standard output ('-') needs --output_format (ply or xyz)");
+  }
+  throw std::runtime_error("cannot write '" + path + "': the output format must be ply, xyz or "
+                           "txt, got '" + chosen + "'");
+}
+
 PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
                          bool with_normals, std::vector<std::string> scalars,
                          std::vector<std::string> index_fields,
-                         const std::vector<std::string>& comments)
-    : file_(std::make_unique<AtomicOutputFile>(path, overwrite)),
-      ply_(FileExtension(path) == "ply"),
+                         const std::vector<std::string>& comments, const std::string& format)
+    : ply_(OutputFormat(path, format) == "ply"),
       count_(count),
       with_normals_(with_normals),
       num_scalars_(scalars.size()),
       num_index_fields_(index_fields.size()) {
-  const std::string extension = FileExtension(path);
-  if (!ply_ && extension != "xyz" && extension != "txt") {
-    throw std::runtime_error("cannot write '" + path +
-                             "': the output extension must be .ply, .xyz or .txt");
-  }
+  file_ = std::make_unique<AtomicOutputFile>(path, overwrite);
   std::ofstream& out = file_->stream();
   if (!ply_) {
     out.precision(17);
@@ -662,7 +699,8 @@ void PointWriter::Commit() {
   file_->Commit();
 }
 
-void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite) {
+void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite,
+                     const std::string& format) {
   std::vector<std::string> scalar_names, index_names;
   for (const auto& scalar : cloud.scalars) {
     if (scalar.second.size() != cloud.points.size()) {
@@ -678,7 +716,7 @@ void WritePointCloud(const std::string& path, const PointCloud& cloud, bool over
   }
   const bool with_normals = !cloud.normals.empty();
   PointWriter writer(path, overwrite, cloud.points.size(), with_normals, scalar_names,
-                     index_names, cloud.comments);
+                     index_names, cloud.comments, format);
   std::vector<float> scalars(scalar_names.size());
   std::vector<uint32_t> indices(index_names.size());
   for (size_t i = 0; i < cloud.points.size(); ++i) {

@@ -46,7 +46,9 @@ struct PointCloud {
 // declares more items than its body can hold (nothing is allocated for them). PLY files also
 // give their normals (nx, ny, nz) and other per-vertex scalar properties, XYZ files their
 // normals as above; other formats give points only.
-PointCloud ReadPointCloud(const std::string& path);
+// `path` "-" reads standard input; `format` ("xyz", "ply", ...) replaces the extension and
+// is needed for "-". Pipes, FIFOs and devices are read without seeking.
+PointCloud ReadPointCloud(const std::string& path, const std::string& format = "");
 // The same from a stream holding a file of format `extension` ("xyz", "ply", ...); `name`
 // stands for the file in messages. `in` must be seekable (a file or a string stream).
 PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
@@ -58,8 +60,14 @@ energy::PointList ReadPoints(const std::string& path);
 // with the checks and errors of ReadPointCloud.
 void ForEachPoint(const std::string& path, const std::function<void(const energy::Point3&)>& visit);
 
-// Writes `cloud` to `path` (".ply" or ".xyz"/".txt"); throws std::runtime_error on failure.
-void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite);
+// Writes `cloud` to `path` (".ply" or ".xyz"/".txt", or `format`; "-" is standard output and
+// needs `format`); throws std::runtime_error on failure.
+void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite,
+                     const std::string& format = "");
+
+// The format written to `path`: `format` when given, else the extension; throws
+// std::runtime_error naming the problem if it is not ply, xyz or txt.
+std::string OutputFormat(const std::string& path, const std::string& format);
 
 // Writes a point set point by point in WritePointCloud's layout: binary PLY with x y z
 // (double), nx ny nz (float) when `with_normals`, the float `scalars`, then the uint
@@ -69,7 +77,7 @@ class PointWriter {
  public:
   PointWriter(const std::string& path, bool overwrite, size_t count, bool with_normals,
               std::vector<std::string> scalars, std::vector<std::string> index_fields,
-              const std::vector<std::string>& comments = {});
+              const std::vector<std::string>& comments = {}, const std::string& format = "");
   ~PointWriter();
   // `scalars` and `indices` hold one value per scalar and index field, in their order.
   void Write(const energy::Point3& p, const energy::Point3& normal, const float* scalars,
