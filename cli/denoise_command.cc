@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "energy/wall_clock.h"
 #include "cli/denoise_flags.h"
+#include "cli/output_cloud.h"
 #include "cli/run_summary.h"
 #include "tiles/tiled_denoise.h"
 #include "io/atomic_output_file.h"
@@ -118,28 +119,6 @@ solvers::IterationCallback ProgressPrinter(solvers::Solver solver, bool quiet) {
   };
 }
 
-io::PointCloud MakeOutputCloud(const solvers::DenoiseResult& result) {
-  io::PointCloud cloud;
-  std::vector<uint32_t> source_index;
-  std::vector<float> outlier, outlier_score, feature, feature_score;
-  for (size_t i = 0; i < result.projected.size(); ++i) {
-    if (!result.kept[i]) continue;
-    source_index.push_back(static_cast<uint32_t>(i));
-    cloud.points.push_back(result.projected[i]);
-    cloud.normals.push_back(result.normals[i]);
-    outlier.push_back(result.indicators.is_outlier[i]);
-    outlier_score.push_back(static_cast<float>(result.indicators.outlier_score[i]));
-    feature.push_back(result.indicators.is_feature[i]);
-    feature_score.push_back(static_cast<float>(result.indicators.feature_score[i]));
-  }
-  cloud.index_fields = {{"source_index", source_index}};
-  cloud.scalars = {{"outlier", outlier},
-                   {"outlier_score", outlier_score},
-                   {"feature", feature},
-                   {"feature_score", feature_score}};
-  return cloud;
-}
-
 // The options and state a resumed run continues from, with the flags applied.
 solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
   // What made the saved problem and start cannot change now (and the preset would only
@@ -224,6 +203,7 @@ struct DenoiseInput {
   bool is_built_in = false;
   energy::PointList points;       // kept for further passes without the outliers
   energy::PointList normals;      // from an input with normals
+  std::vector<io::PointAttribute> attributes;  // every other property of the input
 
   const energy::PointList* normals_or_null() const { return normals.empty() ? nullptr : &normals; }
 };
@@ -234,6 +214,7 @@ DenoiseInput LoadInput(const std::vector<std::string>& arguments) {
     io::PointCloud cloud = io::ReadPointCloud(arguments[0], FLAGS_input_format);
     input.points = std::move(cloud.points);
     input.normals = std::move(cloud.normals);
+    input.attributes = std::move(cloud.attributes);
     return input;
   }
   input.is_built_in = true;
@@ -398,7 +379,9 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   run.output = FLAGS_output;
   run.preset = FLAGS_preset;
   run.given = GivenParameters();
-  io::PointCloud cloud = MakeOutputCloud(result);
+  const bool ply = !FLAGS_output.empty() &&
+                   io::OutputFormat(FLAGS_output, FLAGS_output_format) == "ply";
+  io::PointCloud cloud = MakeOutputCloud(result, input.attributes, ply || FLAGS_output.empty());
   cloud.comments = RunHeaderComments(run, options, result);
   if (!FLAGS_output.empty()) {
     io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite, FLAGS_output_format);

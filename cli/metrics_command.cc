@@ -29,11 +29,11 @@ DEFINE_double(feature_band, 0.01,
 namespace lpd::cli {
 namespace {
 
-const std::vector<float>& RequireScalar(const io::PointCloud& cloud, const std::string& name,
-                                        const std::string& path) {
-  const std::vector<float>* values = cloud.FindScalar(name);
-  if (!values) throw std::runtime_error(path + ": no per-point property '" + name + "'");
-  return *values;
+const std::vector<double>& RequireAttribute(const io::PointCloud& cloud, const std::string& name,
+                                            const std::string& path) {
+  const io::PointAttribute* attribute = cloud.FindAttribute(name);
+  if (!attribute) throw std::runtime_error(path + ": no per-point property '" + name + "'");
+  return attribute->values;
 }
 
 void PrintDetection(const char* what, const experiments::DetectionScore& score) {
@@ -47,16 +47,9 @@ void PrintDetection(const char* what, const experiments::DetectionScore& score) 
 void ScoreAgainstInput(const io::PointCloud& output, const std::string& output_path,
                        const experiments::GroundTruth& truth) {
   const io::PointCloud input = io::ReadPointCloud(FLAGS_input);
-  // source_index is a uint property; files written before it was are read as floats.
-  std::vector<double> source;
-  if (const std::vector<uint32_t>* index = output.FindIndexField("source_index")) {
-    source.assign(index->begin(), index->end());
-  } else {
-    const std::vector<float>& as_float = RequireScalar(output, "source_index", output_path);
-    source.assign(as_float.begin(), as_float.end());
-  }
-  const std::vector<float>& outlier = RequireScalar(output, "outlier", output_path);
-  const std::vector<float>& feature = RequireScalar(output, "feature", output_path);
+  const std::vector<double>& source = RequireAttribute(output, "source_index", output_path);
+  const std::vector<double>& outlier = RequireAttribute(output, "outlier", output_path);
+  const std::vector<double>& feature = RequireAttribute(output, "feature", output_path);
   const size_t n = input.points.size();
   std::vector<uint8_t> flagged_outlier(n, 1), flagged_feature(n, 0);
   for (size_t o = 0; o < output.points.size(); ++o) {
@@ -65,10 +58,10 @@ void ScoreAgainstInput(const io::PointCloud& output, const std::string& output_p
       throw std::runtime_error(output_path + ": source_index " + std::to_string(i) +
                                " is not a point of " + FLAGS_input);
     }
-    flagged_outlier[i] = outlier[o] != 0.0f;
-    flagged_feature[i] = feature[o] != 0.0f;
+    flagged_outlier[i] = outlier[o] != 0.0;
+    flagged_feature[i] = feature[o] != 0.0;
   }
-  const std::vector<float>& is_outlier = RequireScalar(input, "is_outlier", FLAGS_input);
+  const std::vector<double>& is_outlier = RequireAttribute(input, "is_outlier", FLAGS_input);
   std::vector<uint8_t> outlier_labels(is_outlier.begin(), is_outlier.end());
   PrintDetection("outlier", experiments::ScoreDetection(flagged_outlier, outlier_labels));
   if (std::count(outlier_labels.begin(), outlier_labels.end(), 1) > 0) {
@@ -81,7 +74,8 @@ void ScoreAgainstInput(const io::PointCloud& output, const std::string& output_p
                   bound.threshold / truth.diagonal);
     }
   }
-  if (const std::vector<float>* distance = input.FindScalar("feature_distance")) {
+  if (const io::PointAttribute* feature_distance = input.FindAttribute("feature_distance")) {
+    const std::vector<double>* distance = &feature_distance->values;
     std::vector<uint8_t> feature_labels(n), detected_inliers(n);
     const double band = FLAGS_feature_band * truth.diagonal;
     for (size_t i = 0; i < n; ++i) {

@@ -82,14 +82,14 @@ int RunNoiseCommand(const std::vector<std::string>& arguments) {
     cloud.normals = clean.normals;
     cloud.normals.resize(noisy.points.size(), energy::Point3::Zero());  // outliers: none
   }
-  cloud.scalars.push_back({"is_outlier", std::vector<float>(noisy.is_outlier.begin(),
-                                                            noisy.is_outlier.end())});
+  cloud.attributes.push_back(
+      {"is_outlier", "float", std::vector<double>(noisy.is_outlier.begin(), noisy.is_outlier.end())});
   if (shape && shape->has_features()) {
-    std::vector<float> distance(noisy.points.size(), -1.0f);  // -1: outlier, no clean point
+    std::vector<double> distance(noisy.points.size(), -1.0);  // -1: outlier, no clean point
     for (size_t i = 0; i < num_clean; ++i) {
       distance[i] = static_cast<float>(shape->DistanceToFeatures(clean.points[i]));
     }
-    cloud.scalars.push_back({"feature_distance", distance});
+    cloud.attributes.push_back({"feature_distance", "float", distance});
   }
   std::ostringstream description;
   description << "source " << source << ", " << num_clean << " clean points, seed "

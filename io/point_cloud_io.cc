@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
+#include <type_traits>
 #include <functional>
 #include <memory>
 #include <sstream>
@@ -136,20 +138,54 @@ void VisitXyz(const std::string& path, std::istream& in, Visit visit) {
   }
 }
 
+// The numbers of `text` (the columns after x y z); false if one is not a number.
+bool ParseColumns(const char* text, std::vector<double>* columns) {
+  columns->clear();
+  for (;;) {
+    while (*text == ' ' || *text == '\t' || *text == ',' || *text == '\r') ++text;
+    if (*text == '\0' || *text == '#') return true;
+    char* end = nullptr;
+    const double value = std::strtod(text, &end);
+    if (end == text) return false;
+    columns->push_back(value);
+    text = end;
+  }
+}
+
 // Columns 4-6 are read as normals when every line has them and they are unit vectors (as
-// "x y z nx ny nz" exports are); colours or other extra columns are ignored.
+// "x y z nx ny nz" exports are). The other columns (all of them after x y z when they are no
+// normals) become attributes column_4, column_5, ... when every line has the same number of
+// them, all numbers; otherwise they are ignored.
 PointCloud ReadXyz(const std::string& path, std::istream& in) {
   PointCloud cloud;
   bool normals_on_every_line = true;
+  bool same_columns_on_every_line = true;
+  std::vector<std::vector<double>> columns;  // per column, one value per point
+  std::vector<double> line_columns;
   VisitXyz(path, in, [&](const Point3& p, const char* rest) {
     cloud.points.push_back(p);
-    if (!normals_on_every_line) return;
-    Point3 n;
-    normals_on_every_line =
-        ParseThreeNumbers(rest, &n) && n.allFinite() && std::abs(n.norm() - 1.0) < 0.01;
-    if (normals_on_every_line) cloud.normals.push_back(n);
+    if (normals_on_every_line) {
+      Point3 n;
+      normals_on_every_line =
+          ParseThreeNumbers(rest, &n) && n.allFinite() && std::abs(n.norm() - 1.0) < 0.01;
+      if (normals_on_every_line) cloud.normals.push_back(n);
+    }
+    if (!same_columns_on_every_line) return;
+    if (!ParseColumns(rest, &line_columns) ||
+        (cloud.points.size() > 1 && line_columns.size() != columns.size())) {
+      same_columns_on_every_line = false;
+      columns.clear();
+      return;
+    }
+    if (cloud.points.size() == 1) columns.resize(line_columns.size());
+    for (size_t c = 0; c < line_columns.size(); ++c) columns[c].push_back(line_columns[c]);
   });
   if (!normals_on_every_line) cloud.normals.clear();
+  const size_t first = cloud.normals.empty() ? 0 : 3;  // normals are no attribute
+  for (size_t c = first; c < columns.size(); ++c) {
+    cloud.attributes.push_back({"column_" + std::to_string(c + 4), "double",
+                                std::move(columns[c])});
+  }
   return cloud;
 }
 
@@ -239,6 +275,17 @@ int PlyTypeSize(const std::string& type) {
   }
   if (type == "double" || type == "float64") return 8;
   return 0;
+}
+
+// The PLY 1.0 name of `type` (int8 is char, float32 is float, ...).
+std::string CanonicalPlyType(const std::string& type) {
+  static const std::pair<const char*, const char*> kAliases[] = {
+      {"int8", "char"}, {"uint8", "uchar"}, {"int16", "short"}, {"uint16", "ushort"},
+      {"int32", "int"}, {"uint32", "uint"}, {"float32", "float"}, {"float64", "double"}};
+  for (const auto& [alias, name] : kAliases) {
+    if (type == alias) return name;
+  }
+  return type;
 }
 
 bool PlyTypeIsInteger(const std::string& type) {
@@ -391,12 +438,11 @@ PlyHeader ReadPlyHeader(const std::string& path, std::istream& in) {
 }
 
 // Where the vertex element keeps x, y, z, the normal (all three or none) and every other
-// scalar property.
+// scalar property (the attributes).
 struct VertexLayout {
   int xyz[3] = {-1, -1, -1};
   int normal[3] = {-1, -1, -1};
-  std::vector<size_t> scalars;
-  std::vector<size_t> index_fields;  // the uint properties
+  std::vector<size_t> attributes;
 
   bool has_normals() const { return normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0; }
 };
@@ -406,17 +452,23 @@ VertexLayout LayoutOf(const std::string& path, const PlyElement& vertex) {
   const char* kNames[2][3] = {{"x", "y", "z"}, {"nx", "ny", "nz"}};
   for (size_t a = 0; a < vertex.properties.size(); ++a) {
     const PlyProperty& property = vertex.properties[a];
-    bool placed = false;
-    for (int c = 0; c < 3; ++c) {
-      if (property.name == kNames[0][c]) layout.xyz[c] = static_cast<int>(a), placed = true;
-      if (property.count_type.empty() && property.name == kNames[1][c]) {
-        layout.normal[c] = static_cast<int>(a), placed = true;
+    for (size_t b = 0; b < a; ++b) {
+      if (vertex.properties[b].name == property.name) {
+        Fail(path, 0, "the vertex element has two properties named '" + property.name + "'");
       }
     }
-    if (!placed && property.count_type.empty()) {
-      const bool index = property.type == "uint" || property.type == "uint32";
-      (index ? layout.index_fields : layout.scalars).push_back(a);
+    bool placed = false;
+    for (int c = 0; c < 3; ++c) {
+      for (int kind = 0; kind < 2; ++kind) {
+        if (property.name != kNames[kind][c]) continue;
+        if (!property.count_type.empty()) {
+          Fail(path, 0, "the vertex property '" + property.name + "' is a list, not a number");
+        }
+        (kind == 0 ? layout.xyz : layout.normal)[c] = static_cast<int>(a);
+        placed = true;
+      }
     }
+    if (!placed && property.count_type.empty()) layout.attributes.push_back(a);
   }
   if (layout.xyz[0] < 0 || layout.xyz[1] < 0 || layout.xyz[2] < 0) {
     Fail(path, 0, "the vertex element has no x, y, z properties");
@@ -503,9 +555,9 @@ void VisitPly(const std::string& path, std::istream& in, Start start, Visit visi
 PointCloud ReadPly(const std::string& path, std::istream& in) {
   PointCloud cloud;
   auto start = [&](const PlyElement& vertex, const VertexLayout& layout) {
-    for (size_t a : layout.scalars) cloud.scalars.push_back({vertex.properties[a].name, {}});
-    for (size_t a : layout.index_fields) {
-      cloud.index_fields.push_back({vertex.properties[a].name, {}});
+    for (size_t a : layout.attributes) {
+      cloud.attributes.push_back(
+          {vertex.properties[a].name, CanonicalPlyType(vertex.properties[a].type), {}});
     }
     cloud.points.reserve(vertex.count);
   };
@@ -516,12 +568,11 @@ PointCloud ReadPly(const std::string& path, std::istream& in) {
       cloud.normals.emplace_back(values[layout.normal[0]], values[layout.normal[1]],
                                  values[layout.normal[2]]);
     }
-    for (size_t s = 0; s < layout.scalars.size(); ++s) {
-      cloud.scalars[s].second.push_back(static_cast<float>(values[layout.scalars[s]]));
-    }
-    for (size_t s = 0; s < layout.index_fields.size(); ++s) {
-      cloud.index_fields[s].second.push_back(
-          static_cast<uint32_t>(values[layout.index_fields[s]]));
+    for (size_t a = 0; a < layout.attributes.size(); ++a) {
+      PointAttribute& attribute = cloud.attributes[a];
+      const double value = values[layout.attributes[a]];
+      // An ascii float holds what a binary one would: the value rounded to float.
+      attribute.values.push_back(attribute.type == "float" ? static_cast<float>(value) : value);
     }
   };
   VisitPly(path, in, start, visit);
@@ -592,16 +643,9 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
 
 PointList ReadPoints(const std::string& path) { return ReadPointCloud(path).points; }
 
-const std::vector<float>* PointCloud::FindScalar(const std::string& name) const {
-  for (const auto& scalar : scalars) {
-    if (scalar.first == name) return &scalar.second;
-  }
-  return nullptr;
-}
-
-const std::vector<uint32_t>* PointCloud::FindIndexField(const std::string& name) const {
-  for (const auto& field : index_fields) {
-    if (field.first == name) return &field.second;
+const PointAttribute* PointCloud::FindAttribute(const std::string& name) const {
+  for (const PointAttribute& attribute : attributes) {
+    if (attribute.name == name) return &attribute;
   }
   return nullptr;
 }
@@ -641,14 +685,18 @@ std::string OutputFormat(const std::string& path, const std::string& format) {
 }
 
 PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
-                         bool with_normals, std::vector<std::string> scalars,
-                         std::vector<std::string> index_fields,
+                         bool with_normals,
+                         std::vector<std::pair<std::string, std::string>> fields,
                          const std::vector<std::string>& comments, const std::string& format)
     : ply_(OutputFormat(path, format) == "ply"),
       count_(count),
-      with_normals_(with_normals),
-      num_scalars_(scalars.size()),
-      num_index_fields_(index_fields.size()) {
+      with_normals_(with_normals) {
+  for (const auto& [name, type] : fields) {
+    if (PlyTypeSize(type) == 0) {
+      throw std::invalid_argument("property '" + name + "' has no PLY type ('" + type + "')");
+    }
+    types_.push_back(CanonicalPlyType(type));
+  }
   file_ = std::make_unique<AtomicOutputFile>(path, overwrite);
   std::ofstream& out = file_->stream();
   if (!ply_) {
@@ -661,33 +709,78 @@ PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
   out << "element vertex " << count << "\n";
   out << "property double x\nproperty double y\nproperty double z\n";
   if (with_normals) out << "property float nx\nproperty float ny\nproperty float nz\n";
-  for (const std::string& name : scalars) out << "property float " << name << "\n";
-  for (const std::string& name : index_fields) out << "property uint " << name << "\n";
+  for (size_t f = 0; f < fields.size(); ++f) {
+    out << "property " << types_[f] << " " << fields[f].first << "\n";
+  }
   out << "end_header\n";
 }
 
 PointWriter::~PointWriter() = default;
 
-void PointWriter::Write(const Point3& p, const Point3& normal, const float* scalars,
-                        const uint32_t* indices) {
+namespace {
+
+// `value` as a T: rounded and clamped to T's range for an integer T (NaN gives 0).
+template <typename T>
+T Converted(double value) {
+  if constexpr (std::is_integral_v<T>) {
+    if (std::isnan(value)) return 0;
+    const double rounded = std::round(value);
+    if (rounded <= static_cast<double>(std::numeric_limits<T>::min())) {
+      return std::numeric_limits<T>::min();
+    }
+    if (rounded >= static_cast<double>(std::numeric_limits<T>::max())) {
+      return std::numeric_limits<T>::max();
+    }
+    return static_cast<T>(rounded);
+  } else {
+    return static_cast<T>(value);
+  }
+}
+
+template <typename T>
+void AppendAs(double value, std::vector<char>* record) {
+  const T converted = Converted<T>(value);
+  const char* bytes = reinterpret_cast<const char*>(&converted);
+  record->insert(record->end(), bytes, bytes + sizeof(T));
+}
+
+void AppendTyped(const std::string& type, double value, std::vector<char>* record) {
+  if (type == "char") return AppendAs<int8_t>(value, record);
+  if (type == "uchar") return AppendAs<uint8_t>(value, record);
+  if (type == "short") return AppendAs<int16_t>(value, record);
+  if (type == "ushort") return AppendAs<uint16_t>(value, record);
+  if (type == "int") return AppendAs<int32_t>(value, record);
+  if (type == "uint") return AppendAs<uint32_t>(value, record);
+  if (type == "float") return AppendAs<float>(value, record);
+  AppendAs<double>(value, record);
+}
+
+}  // namespace
+
+void PointWriter::Write(const Point3& p, const Point3& normal, const double* values) {
   ++written_;
   std::ofstream& out = file_->stream();
   if (!ply_) {
-    out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    out << p.x() << ' ' << p.y() << ' ' << p.z();
+    for (size_t f = 0; f < types_.size(); ++f) {
+      if (PlyTypeIsInteger(types_[f])) {
+        out << ' ' << static_cast<long long>(Converted<int64_t>(values[f]));
+      } else {
+        out << ' ' << (types_[f] == "float" ? static_cast<float>(values[f]) : values[f]);
+      }
+    }
+    out << '\n';
     return;
   }
   record_.clear();
-  auto append = [this](const void* data, size_t size) {
-    const char* bytes = static_cast<const char*>(data);
-    record_.insert(record_.end(), bytes, bytes + size);
-  };
-  append(p.data(), 3 * sizeof(double));
+  const char* bytes = reinterpret_cast<const char*>(p.data());
+  record_.insert(record_.end(), bytes, bytes + 3 * sizeof(double));
   if (with_normals_) {
     const Eigen::Vector3f as_float = normal.cast<float>();
-    append(as_float.data(), 3 * sizeof(float));
+    bytes = reinterpret_cast<const char*>(as_float.data());
+    record_.insert(record_.end(), bytes, bytes + 3 * sizeof(float));
   }
-  append(scalars, num_scalars_ * sizeof(float));
-  append(indices, num_index_fields_ * sizeof(uint32_t));
+  for (size_t f = 0; f < types_.size(); ++f) AppendTyped(types_[f], values[f], &record_);
   out.write(record_.data(), static_cast<std::streamsize>(record_.size()));
 }
 
@@ -701,29 +794,21 @@ void PointWriter::Commit() {
 
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite,
                      const std::string& format) {
-  std::vector<std::string> scalar_names, index_names;
-  for (const auto& scalar : cloud.scalars) {
-    if (scalar.second.size() != cloud.points.size()) {
-      throw std::invalid_argument("scalar property '" + scalar.first + "' has the wrong size");
+  std::vector<std::pair<std::string, std::string>> fields;
+  for (const PointAttribute& attribute : cloud.attributes) {
+    if (attribute.values.size() != cloud.points.size()) {
+      throw std::invalid_argument("property '" + attribute.name + "' has the wrong size");
     }
-    scalar_names.push_back(scalar.first);
-  }
-  for (const auto& field : cloud.index_fields) {
-    if (field.second.size() != cloud.points.size()) {
-      throw std::invalid_argument("index property '" + field.first + "' has the wrong size");
-    }
-    index_names.push_back(field.first);
+    fields.emplace_back(attribute.name, attribute.type);
   }
   const bool with_normals = !cloud.normals.empty();
-  PointWriter writer(path, overwrite, cloud.points.size(), with_normals, scalar_names,
-                     index_names, cloud.comments, format);
-  std::vector<float> scalars(scalar_names.size());
-  std::vector<uint32_t> indices(index_names.size());
+  PointWriter writer(path, overwrite, cloud.points.size(), with_normals, fields, cloud.comments,
+                     format);
+  std::vector<double> values(fields.size());
   for (size_t i = 0; i < cloud.points.size(); ++i) {
-    for (size_t s = 0; s < scalars.size(); ++s) scalars[s] = cloud.scalars[s].second[i];
-    for (size_t s = 0; s < indices.size(); ++s) indices[s] = cloud.index_fields[s].second[i];
+    for (size_t f = 0; f < values.size(); ++f) values[f] = cloud.attributes[f].values[i];
     writer.Write(cloud.points[i], with_normals ? cloud.normals[i] : Point3::Zero(),
-                 scalars.data(), indices.data());
+                 values.data());
   }
   writer.Commit();
 }

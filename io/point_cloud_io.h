@@ -26,26 +26,31 @@ namespace lpd::io {
 
 class AtomicOutputFile;
 
+// A per-point property other than the coordinates and the normals: a colour channel, an
+// intensity, a class, lpd's own flags and scores.
+struct PointAttribute {
+  std::string name;
+  // A PLY scalar type: char, uchar, short, ushort, int, uint, float or double. Written back
+  // with it, so that a property survives a run bit for bit.
+  std::string type;
+  std::vector<double> values;  // one per point; a double holds every value of these types
+};
+
 struct PointCloud {
   energy::PointList points;
   energy::PointList normals;  // empty, or one per point
-  // Named per-point scalar properties (e.g. "outlier", "feature_score"), one value per point.
-  std::vector<std::pair<std::string, std::vector<float>>> scalars;
-  // Named per-point indices ("source_index", "tile"), PLY type uint: exact beyond the 2^24
-  // where a float stops counting. A PLY "uint" property is read into these.
-  std::vector<std::pair<std::string, std::vector<uint32_t>>> index_fields;
+  std::vector<PointAttribute> attributes;
   std::vector<std::string> comments;  // PLY header comments (one line each)
 
-  // The scalar property called `name`, or nullptr.
-  const std::vector<float>* FindScalar(const std::string& name) const;
-  // The index field called `name`, or nullptr.
-  const std::vector<uint32_t>* FindIndexField(const std::string& name) const;
+  // The attribute called `name`, or nullptr.
+  const PointAttribute* FindAttribute(const std::string& name) const;
 };
 
 // Throws std::runtime_error with a one-line reason on any problem, also when a PLY header
 // declares more items than its body can hold (nothing is allocated for them). PLY files also
-// give their normals (nx, ny, nz) and other per-vertex scalar properties, XYZ files their
-// normals as above; other formats give points only.
+// give their normals (nx, ny, nz) and every other per-vertex scalar property with its type;
+// XYZ files their normals as above and their other columns, when every line has as many, as
+// double attributes column_4, column_5, ...; other formats give points only.
 // `path` "-" reads standard input; `format` ("xyz", "ply", ...) replaces the extension and
 // is needed for "-". Pipes, FIFOs and devices are read without seeking.
 PointCloud ReadPointCloud(const std::string& path, const std::string& format = "");
@@ -70,18 +75,18 @@ void WritePointCloud(const std::string& path, const PointCloud& cloud, bool over
 std::string OutputFormat(const std::string& path, const std::string& format);
 
 // Writes a point set point by point in WritePointCloud's layout: binary PLY with x y z
-// (double), nx ny nz (float) when `with_normals`, the float `scalars`, then the uint
-// `index_fields`; or XYZ text (points only). `count` points must be written before Commit,
+// (double), nx ny nz (float) when `with_normals`, then the `fields` (name, PLY type) in order;
+// or XYZ text: x y z and the fields' values. `count` points must be written before Commit,
 // which puts the file in place (AtomicOutputFile; nothing appears without it).
 class PointWriter {
  public:
   PointWriter(const std::string& path, bool overwrite, size_t count, bool with_normals,
-              std::vector<std::string> scalars, std::vector<std::string> index_fields,
+              std::vector<std::pair<std::string, std::string>> fields,
               const std::vector<std::string>& comments = {}, const std::string& format = "");
   ~PointWriter();
-  // `scalars` and `indices` hold one value per scalar and index field, in their order.
-  void Write(const energy::Point3& p, const energy::Point3& normal, const float* scalars,
-             const uint32_t* indices);
+  // `values` holds one value per field, in their order; each is converted to its field's
+  // type (rounded and clamped to its range for the integer types).
+  void Write(const energy::Point3& p, const energy::Point3& normal, const double* values);
   void Commit();
 
  private:
@@ -90,8 +95,7 @@ class PointWriter {
   size_t count_;
   size_t written_ = 0;
   bool with_normals_;
-  size_t num_scalars_;
-  size_t num_index_fields_;
+  std::vector<std::string> types_;
   std::vector<char> record_;
 };
 

@@ -214,8 +214,13 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
     if (!*results.back()) throw std::runtime_error("missing " + TilePath(directory_, t));
   }
   io::PointWriter writer(output, overwrite, kept, /*with_normals=*/true,
-                     {"outlier", "outlier_score", "feature", "feature_score", "seam"},
-                     {"source_index", "tile"});
+                         {{"outlier", "float"},
+                          {"outlier_score", "float"},
+                          {"feature", "float"},
+                          {"feature_score", "float"},
+                          {"seam", "float"},
+                          {"source_index", "uint"},
+                          {"tile", "uint"}});
   char bytes[kRecordBytes];
   Scan([&](uint32_t index, const energy::Point3& p) {
     const int t = tree.Locate(p);
@@ -232,12 +237,11 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
         break;
       }
     }
-    const float scalars[] = {static_cast<float>(r.is_outlier), r.outlier_score,
-                             static_cast<float>(r.is_feature), r.feature_score,
-                             seam ? 1.0f : 0.0f};
-    const uint32_t indices[] = {index, static_cast<uint32_t>(t)};
+    const double values[] = {static_cast<double>(r.is_outlier), r.outlier_score,
+                             static_cast<double>(r.is_feature), r.feature_score,
+                             seam ? 1.0 : 0.0, static_cast<double>(index), static_cast<double>(t)};
     writer.Write(energy::Point3(r.position[0], r.position[1], r.position[2]),
-                 energy::Point3(r.normal[0], r.normal[1], r.normal[2]), scalars, indices);
+                 energy::Point3(r.normal[0], r.normal[1], r.normal[2]), values);
   });
   writer.Commit();
 }

@@ -135,16 +135,22 @@ void SaveClouds(const std::string& directory, const std::string& cell_id,
                 const std::vector<double>& distances) {
   const std::string clouds = directory + "/clouds";
   std::filesystem::create_directories(clouds);
-  auto as_float = [](const auto& values) { return std::vector<float>(values.begin(), values.end()); };
+  // Written as float properties, as every viewer shows them.
+  auto as_float = [](std::string name, const auto& values) {
+    return io::PointAttribute{std::move(name), "float",
+                              std::vector<double>(values.begin(), values.end())};
+  };
   io::PointCloud noisy;
   noisy.points = input.points;
-  if (!run.outlier_flags.empty()) noisy.scalars.emplace_back("outlier", as_float(run.outlier_flags));
-  if (!run.feature_flags.empty()) noisy.scalars.emplace_back("feature", as_float(run.feature_flags));
-  if (!input.is_outlier.empty()) noisy.scalars.emplace_back("true_outlier", as_float(input.is_outlier));
+  if (!run.outlier_flags.empty()) noisy.attributes.push_back(as_float("outlier", run.outlier_flags));
+  if (!run.feature_flags.empty()) noisy.attributes.push_back(as_float("feature", run.feature_flags));
+  if (!input.is_outlier.empty()) {
+    noisy.attributes.push_back(as_float("true_outlier", input.is_outlier));
+  }
   io::WritePointCloud(clouds + "/" + cell_id + "_input.ply", noisy, /*overwrite=*/true);
   io::PointCloud output;
   output.points = run.output;
-  if (!distances.empty()) output.scalars.emplace_back("distance", as_float(distances));
+  if (!distances.empty()) output.attributes.push_back(as_float("distance", distances));
   io::WritePointCloud(clouds + "/" + cell_id + "_output.ply", output, /*overwrite=*/true);
 }
 

@@ -180,12 +180,12 @@ noise:
     if (name.size() < 11 || name.substr(name.size() - 11) != "_output.ply") continue;
     ++outputs;
     const io::PointCloud cloud = io::ReadPointCloud(entry.path().string());
-    ASSERT_EQ(cloud.scalars.size(), 1u) << name;
-    ASSERT_EQ(cloud.scalars[0].first, "distance");
-    ASSERT_EQ(cloud.scalars[0].second.size(), cloud.points.size());
+    ASSERT_EQ(cloud.attributes.size(), 1u) << name;
+    ASSERT_EQ(cloud.attributes[0].name, "distance");
+    ASSERT_EQ(cloud.attributes[0].values.size(), cloud.points.size());
     for (size_t i = 0; i < cloud.points.size(); ++i) {
       // The sphere's distance in closed form; the PLY stores floats.
-      EXPECT_NEAR(cloud.scalars[0].second[i], std::abs(cloud.points[i].norm() - 0.5), 1e-6)
+      EXPECT_NEAR(cloud.attributes[0].values[i], std::abs(cloud.points[i].norm() - 0.5), 1e-6)
           << name << " point " << i;
     }
   }

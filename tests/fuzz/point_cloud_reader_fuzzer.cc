@@ -20,8 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       if (!p.allFinite()) std::abort();
     }
     if (!cloud.normals.empty() && cloud.normals.size() != cloud.points.size()) std::abort();
-    for (const auto& scalar : cloud.scalars) {
-      if (scalar.second.size() != cloud.points.size()) std::abort();
+    for (const auto& attribute : cloud.attributes) {
+      if (attribute.values.size() != cloud.points.size()) std::abort();
     }
   } catch (const std::runtime_error&) {
   }

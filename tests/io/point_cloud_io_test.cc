@@ -63,7 +63,7 @@ TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
   io::PointCloud cloud;
   cloud.points = {{1.5, -2.25, 1e-9}, {3, 4, 5}};
   cloud.normals = {{0, 0, 1}, {1, 0, 0}};
-  cloud.scalars = {{"feature", {1.0f, 0.0f}}};
+  cloud.attributes = {{"feature", "float", {1.0, 0.0}}};
   const std::string path = (directory_ / "out.ply").string();
   io::WritePointCloud(path, cloud, false);
   const auto points = io::ReadPoints(path);
@@ -71,7 +71,7 @@ TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
   EXPECT_EQ(points[0], cloud.points[0]);
   EXPECT_EQ(points[1], cloud.points[1]);
   // An existing output is never replaced without `overwrite`, and is left intact.
-  EXPECT_THROW(io::WritePointCloud(path, io::PointCloud{{{9, 9, 9}}, {}, {}, {}, {}}, false),
+  EXPECT_THROW(io::WritePointCloud(path, io::PointCloud{{{9, 9, 9}}, {}, {}, {}}, false),
                std::runtime_error);
   EXPECT_EQ(io::ReadPoints(path).size(), 2u);
   const std::string xyz = (directory_ / "out.xyz").string();
@@ -79,20 +79,83 @@ TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
   EXPECT_EQ(io::ReadPoints(xyz)[0], cloud.points[0]);
 }
 
-TEST_F(PointCloudIoTest, IndexFieldsStayExactPastTheFloatMantissa) {
-  // 2^24 + 1 is the first integer a float cannot hold.
+// Every PLY scalar type keeps its values exactly, at the ends of its range too (2^24 + 1 is
+// the first integer a float cannot hold); out-of-range values are clamped to the type.
+TEST_F(PointCloudIoTest, AttributesKeepTheirTypeAndValues) {
   io::PointCloud cloud;
-  cloud.points = {{0, 0, 0}, {1, 1, 1}};
-  cloud.scalars = {{"score", {0.5f, 0.25f}}};
-  cloud.index_fields = {{"source_index", {16777217u, 4000000000u}}};
-  const std::string path = (directory_ / "indices.ply").string();
-  io::WritePointCloud(path, cloud, false);
-  const io::PointCloud read = io::ReadPointCloud(path);
-  ASSERT_NE(read.FindIndexField("source_index"), nullptr);
-  EXPECT_EQ(*read.FindIndexField("source_index"), cloud.index_fields[0].second);
-  ASSERT_NE(read.FindScalar("score"), nullptr);
-  EXPECT_EQ(*read.FindScalar("score"), cloud.scalars[0].second);
-  EXPECT_EQ(read.FindScalar("source_index"), nullptr);
+  cloud.points = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
+  cloud.attributes = {{"a_char", "char", {-128, 127, 0}},
+                      {"red", "uchar", {0, 255, 17}},
+                      {"a_short", "short", {-32768, 32767, -1}},
+                      {"a_ushort", "ushort", {0, 65535, 1}},
+                      {"a_int", "int", {-2147483648.0, 2147483647.0, 5}},
+                      {"source_index", "uint", {16777217, 4000000000.0, 4294967295.0}},
+                      {"score", "float", {0.5, 0.1f, -1e30f}},
+                      {"exact", "double", {0.1, 1.0 / 3.0, -1e300}},
+                      {"clamped", "uchar", {-5, 300, 2.6}}};
+  for (const char* name : {"attributes.ply", "attributes_ascii.ply"}) {
+    const std::string path = (directory_ / name).string();
+    if (std::string(name) == "attributes.ply") {
+      io::WritePointCloud(path, cloud, false);
+    } else {  // the same values in an ascii PLY written by hand (int8 etc.: the PLY aliases)
+      Write(name,
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nproperty int8 a_char\nproperty uint8 red\nproperty int16 a_short\n"
+            "property uint16 a_ushort\nproperty int32 a_int\nproperty uint32 source_index\n"
+            "property float32 score\nproperty float64 exact\nproperty uchar clamped\n"
+            "end_header\n"
+            "0 0 0 -128 0 -32768 0 -2147483648 16777217 0.5 0.10000000000000001 0 0\n"
+            "1 1 1 127 255 32767 65535 2147483647 4000000000 0.100000001490116 "
+            "0.33333333333333331 255 255\n"
+            "2 2 2 0 17 -1 1 5 4294967295 -1.00000001504747e+30 -1e+300 3 3\n");
+    }
+    const io::PointCloud read = io::ReadPointCloud(path);
+    ASSERT_EQ(read.attributes.size(), cloud.attributes.size()) << name;
+    for (size_t a = 0; a < cloud.attributes.size(); ++a) {
+      const io::PointAttribute& expected = cloud.attributes[a];
+      const io::PointAttribute* found = read.FindAttribute(expected.name);
+      ASSERT_NE(found, nullptr) << expected.name;
+      EXPECT_EQ(found->type, expected.type) << expected.name;
+      if (expected.name == "clamped") {
+        EXPECT_EQ(found->values, (std::vector<double>{0, 255, 3})) << name;
+      } else if (expected.type == "float") {
+        for (int i = 0; i < 3; ++i) {
+          EXPECT_EQ(found->values[i], static_cast<float>(expected.values[i])) << name;
+        }
+      } else {
+        EXPECT_EQ(found->values, expected.values) << name << " " << expected.name;
+      }
+    }
+  }
+  EXPECT_EQ(io::ReadPointCloud((directory_ / "attributes.ply").string()).FindAttribute("x"),
+            nullptr);
+}
+
+TEST_F(PointCloudIoTest, XyzColumnsBecomeAttributesWhenEveryLineHasThem) {
+  const io::PointCloud colours =
+      io::ReadPointCloud(Write("colours.xyz", "0 0 0 255 0 10\n1 1 1 0 128 20.5\n"));
+  ASSERT_EQ(colours.attributes.size(), 3u);
+  EXPECT_EQ(colours.attributes[0].name, "column_4");
+  EXPECT_EQ(colours.attributes[2].values, (std::vector<double>{10, 20.5}));
+  const io::PointCloud normals =
+      io::ReadPointCloud(Write("normals.xyz", "0 0 0 0 0 1 7\n1 1 1 1 0 0 8\n"));
+  EXPECT_EQ(normals.normals.size(), 2u);
+  ASSERT_EQ(normals.attributes.size(), 1u);
+  EXPECT_EQ(normals.attributes[0].name, "column_7");
+  EXPECT_TRUE(io::ReadPointCloud(Write("ragged.xyz", "0 0 0 1\n1 1 1\n")).attributes.empty());
+}
+
+TEST_F(PointCloudIoTest, RepeatedOrListCoordinatesAreRefused) {
+  EXPECT_NE(ReadError(Write("twice.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                         "property float x\nproperty float y\nproperty float z\n"
+                                         "property float x\nend_header\n1 2 3 999\n"))
+                .find("two properties named 'x'"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("list.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                        "property list uchar float x\nproperty float y\n"
+                                        "property float z\nend_header\n1 1 2 3\n"))
+                .find("'x' is a list"),
+            std::string::npos);
 }
 
 // Every point io::ForEachPoint visits, or the message of the exception it throws.
@@ -110,7 +173,7 @@ TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
   io::PointCloud cloud;
   cloud.points = {{1.5, -2.25, 1e-9}, {3, 4, 5}, {-7, 0.125, 2}};
   cloud.normals = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
-  cloud.scalars = {{"score", {0.5f, 0.25f, 1.0f}}};
+  cloud.attributes = {{"score", "float", {0.5, 0.25, 1.0}}};
   const std::string binary = (directory_ / "binary.ply").string();
   io::WritePointCloud(binary, cloud, false);
   const std::string paths[] = {
@@ -138,8 +201,8 @@ TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
 TEST_F(PointCloudIoTest, APointWriterShortOfItsCountLeavesNoFile) {
   const std::string path = (directory_ / "short.ply").string();
   {
-    io::PointWriter writer(path, false, 2, false, {}, {});
-    writer.Write({1, 2, 3}, {0, 0, 0}, nullptr, nullptr);
+    io::PointWriter writer(path, false, 2, false, {});
+    writer.Write({1, 2, 3}, {0, 0, 0}, nullptr);
     EXPECT_THROW(writer.Commit(), std::logic_error);
   }
   EXPECT_FALSE(fs::exists(path));
@@ -164,9 +227,9 @@ TEST_F(PointCloudIoTest, BadFilesGiveOneLineErrorsNamingTheProblem) {
             std::string::npos);
   // A list longer than the body: the counts fit, the data does not.
   const std::string list_header =
-      "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uchar float x\n"
-      "property float y\nproperty float z\nend_header\n";
-  EXPECT_NE(ReadError(Write("list.ply", list_header + '\xff' + std::string(12, '\0')))
+      "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+      "property float y\nproperty float z\nproperty list uchar float w\nend_header\n";
+  EXPECT_NE(ReadError(Write("list.ply", list_header + std::string(12, '\0') + '\xff'))
                 .find("binary data ends inside element 'vertex'"),
             std::string::npos);
   EXPECT_NE(ReadError(Write("n.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
