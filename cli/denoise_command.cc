@@ -203,7 +203,7 @@ struct DenoiseInput {
   bool is_built_in = false;
   energy::PointList points;       // kept for further passes without the outliers
   energy::PointList normals;      // from an input with normals
-  std::vector<io::PointAttribute> attributes;  // every other property of the input
+  io::PointCloud properties;      // the input's attributes and LAS header (no points)
 
   const energy::PointList* normals_or_null() const { return normals.empty() ? nullptr : &normals; }
 };
@@ -214,7 +214,8 @@ DenoiseInput LoadInput(const std::vector<std::string>& arguments) {
     io::PointCloud cloud = io::ReadPointCloud(arguments[0], FLAGS_input_format);
     input.points = std::move(cloud.points);
     input.normals = std::move(cloud.normals);
-    input.attributes = std::move(cloud.attributes);
+    input.properties.attributes = std::move(cloud.attributes);
+    input.properties.las = std::move(cloud.las);
     return input;
   }
   input.is_built_in = true;
@@ -379,9 +380,11 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
   run.output = FLAGS_output;
   run.preset = FLAGS_preset;
   run.given = GivenParameters();
-  const bool ply = !FLAGS_output.empty() &&
-                   io::OutputFormat(FLAGS_output, FLAGS_output_format) == "ply";
-  io::PointCloud cloud = MakeOutputCloud(result, input.attributes, ply || FLAGS_output.empty());
+  const std::string format =
+      FLAGS_output.empty() ? "ply" : io::OutputFormat(FLAGS_output, FLAGS_output_format);
+  io::PointCloud cloud = MakeOutputCloud(
+      result, input.properties,
+      format == "ply" ? OutputKind::kPly : format == "las" ? OutputKind::kLas : OutputKind::kText);
   cloud.comments = RunHeaderComments(run, options, result);
   if (!FLAGS_output.empty()) {
     io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite, FLAGS_output_format);

@@ -21,22 +21,35 @@ const std::vector<const char*>& LpdFieldNames() {
   return names;
 }
 
-io::PointCloud MakeOutputCloud(const solvers::DenoiseResult& result,
-                               const std::vector<io::PointAttribute>& input_attributes,
-                               bool with_lpd_fields) {
+io::PointCloud MakeOutputCloud(const solvers::DenoiseResult& result, const io::PointCloud& input,
+                               OutputKind kind) {
+  const bool with_lpd_fields = kind == OutputKind::kPly;
   std::vector<size_t> rows;
   for (size_t i = 0; i < result.projected.size(); ++i) {
     if (result.kept[i]) rows.push_back(i);
   }
   io::PointCloud cloud;
   for (size_t i : rows) cloud.points.push_back(result.projected[i]);
-  for (const io::PointAttribute& input : input_attributes) {
-    io::PointAttribute kept{input.name, input.type, {}};
+  for (const io::PointAttribute& attribute : input.attributes) {
+    io::PointAttribute kept{attribute.name, attribute.type, {}};
     while (with_lpd_fields && IsTaken(kept.name, cloud.attributes)) {
       kept.name = "input_" + kept.name;
     }
-    for (size_t i : rows) kept.values.push_back(input.values[i]);
+    for (size_t i : rows) kept.values.push_back(attribute.values[i]);
     cloud.attributes.push_back(std::move(kept));
+  }
+  if (kind == OutputKind::kLas) {
+    cloud.las = input.las;
+    auto found = std::find_if(cloud.attributes.begin(), cloud.attributes.end(),
+                              [](const io::PointAttribute& a) { return a.name == "classification"; });
+    if (found == cloud.attributes.end()) {
+      cloud.attributes.push_back({"classification", "uchar", std::vector<double>(rows.size(), 0)});
+      found = cloud.attributes.end() - 1;
+    }
+    constexpr double kLowNoise = 7;  // ASPRS class 7
+    for (size_t r = 0; r < rows.size(); ++r) {
+      if (result.indicators.is_outlier[rows[r]]) found->values[r] = kLowNoise;
+    }
   }
   if (!with_lpd_fields) return cloud;
   for (size_t i : rows) cloud.normals.push_back(result.normals[i]);

@@ -14,12 +14,18 @@ namespace lpd::cli {
 // lpd's fields, in the order they are written.
 const std::vector<const char*>& LpdFieldNames();
 
-// The kept points of `result` with `input_attributes` (one value per input point) and, when
-// `with_lpd_fields` (PLY outputs), the normals and lpd's fields. An input attribute named as
-// one of lpd's fields is renamed input_NAME (input_input_NAME, ...), so that neither is lost.
-io::PointCloud MakeOutputCloud(const solvers::DenoiseResult& result,
-                               const std::vector<io::PointAttribute>& input_attributes,
-                               bool with_lpd_fields);
+enum class OutputKind {
+  kPly,   // the normals and lpd's fields beside the input's attributes
+  kText,  // the input's attributes only (XYZ columns)
+  kLas,   // the input's fields, with class 7 (low noise, as PDAL marks outliers) on every
+          // flagged point that is in the output (--outliers=mark)
+};
+
+// The kept points of `result` with `input` (the input cloud's attributes, one value per input
+// point, and its LAS header). An input attribute named as one of lpd's fields is renamed
+// input_NAME (input_input_NAME, ...) in a PLY, so that neither is lost.
+io::PointCloud MakeOutputCloud(const solvers::DenoiseResult& result, const io::PointCloud& input,
+                               OutputKind kind);
 
 }  // namespace lpd::cli
 

@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "io/atomic_output_file.h"
+#include "io/las_io.h"
 
 namespace lpd::io {
 namespace {
@@ -633,9 +634,11 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
     cloud.points = ReadOff(name, in);
   } else if (extension == "obj") {
     cloud.points = ReadObj(name, in);
+  } else if (extension == "las" || extension == "laz") {
+    cloud = ReadLas(name, in);
   } else {
     Fail(name, 0, "unknown point-cloud format '." + extension +
-                      "' (expected .xyz, .txt, .pts, .ply, .off or .obj)");
+                      "' (expected .xyz, .txt, .pts, .ply, .off, .obj or .las)");
   }
   if (cloud.points.empty()) Fail(name, 0, kNoPoints);
   return cloud;
@@ -676,7 +679,11 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
 
 std::string OutputFormat(const std::string& path, const std::string& format) {
   const std::string chosen = format.empty() ? FileExtension(path) : format;
-  if (chosen == "ply" || chosen == "xyz" || chosen == "txt") return chosen;
+  if (chosen == "ply" || chosen == "xyz" || chosen == "txt" || chosen == "las") return chosen;
+  if (chosen == "laz") {
+    throw std::runtime_error("cannot write '" + path + "': LAZ (compressed LAS) is not "
+                             "supported; write .las and compress it with `laszip`");
+  }
   if (path == kStandardStream && format.empty()) {
     throw std::runtime_error("writing standard output ('-') needs --output_format (ply or xyz)");
   }
@@ -691,6 +698,10 @@ PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
     : ply_(OutputFormat(path, format) == "ply"),
       count_(count),
       with_normals_(with_normals) {
+  if (OutputFormat(path, format) == "las") {
+    throw std::runtime_error("cannot write '" + path + "' point by point: LAS is written "
+                             "whole (WritePointCloud); write PLY or XYZ here");
+  }
   for (const auto& [name, type] : fields) {
     if (PlyTypeSize(type) == 0) {
       throw std::invalid_argument("property '" + name + "' has no PLY type ('" + type + "')");
@@ -794,6 +805,12 @@ void PointWriter::Commit() {
 
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite,
                      const std::string& format) {
+  if (OutputFormat(path, format) == "las") {
+    AtomicOutputFile file(path, overwrite);
+    WriteLas(file.stream(), cloud, path);
+    file.Commit();
+    return;
+  }
   std::vector<std::pair<std::string, std::string>> fields;
   for (const PointAttribute& attribute : cloud.attributes) {
     if (attribute.values.size() != cloud.points.size()) {

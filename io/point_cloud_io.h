@@ -25,6 +25,7 @@
 namespace lpd::io {
 
 class AtomicOutputFile;
+struct LasLayout;
 
 // A per-point property other than the coordinates and the normals: a colour channel, an
 // intensity, a class, lpd's own flags and scores.
@@ -41,6 +42,8 @@ struct PointCloud {
   energy::PointList normals;  // empty, or one per point
   std::vector<PointAttribute> attributes;
   std::vector<std::string> comments;  // PLY header comments (one line each)
+  // The LAS header a cloud read from LAS came with (las_io.h); written back with it.
+  std::shared_ptr<const LasLayout> las;
 
   // The attribute called `name`, or nullptr.
   const PointAttribute* FindAttribute(const std::string& name) const;
@@ -50,7 +53,8 @@ struct PointCloud {
 // declares more items than its body can hold (nothing is allocated for them). PLY files also
 // give their normals (nx, ny, nz) and every other per-vertex scalar property with its type;
 // XYZ files their normals as above and their other columns, when every line has as many, as
-// double attributes column_4, column_5, ...; other formats give points only.
+// double attributes column_4, column_5, ...; LAS files every field of their records
+// (las_io.h); other formats give points only. LAZ is refused with how to convert it.
 // `path` "-" reads standard input; `format` ("xyz", "ply", ...) replaces the extension and
 // is needed for "-". Pipes, FIFOs and devices are read without seeking.
 PointCloud ReadPointCloud(const std::string& path, const std::string& format = "");
@@ -71,7 +75,7 @@ void WritePointCloud(const std::string& path, const PointCloud& cloud, bool over
                      const std::string& format = "");
 
 // The format written to `path`: `format` when given, else the extension; throws
-// std::runtime_error naming the problem if it is not ply, xyz or txt.
+// std::runtime_error naming the problem if it is not ply, xyz, txt or las.
 std::string OutputFormat(const std::string& path, const std::string& format);
 
 // Writes a point set point by point in WritePointCloud's layout: binary PLY with x y z

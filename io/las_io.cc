@@ -1,0 +1,373 @@
+#include "io/las_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include "io/point_cloud_io.h"
+
+namespace lpd::io {
+namespace {
+
+[[noreturn]] void Fail(const std::string& name, const std::string& reason) {
+  throw std::runtime_error(name + ": " + reason);
+}
+
+// One field of a point record: a whole value of `type` at `offset`, or, when `bits` > 0,
+// `bits` bits from bit `shift` of the byte at `offset`.
+struct LasField {
+  const char* name;
+  const char* type;
+  int offset;
+  int shift = 0;
+  int bits = 0;
+};
+
+// The fields of each point format after X, Y, Z (three int32 at 0, 4, 8).
+const std::vector<LasField>& FieldsOf(int format) {
+  static const std::vector<LasField> kLegacy = {
+      {"intensity", "ushort", 12},
+      {"return_number", "uchar", 14, 0, 3},
+      {"number_of_returns", "uchar", 14, 3, 3},
+      {"scan_direction_flag", "uchar", 14, 6, 1},
+      {"edge_of_flight_line", "uchar", 14, 7, 1},
+      {"classification", "uchar", 15, 0, 5},
+      {"synthetic", "uchar", 15, 5, 1},
+      {"key_point", "uchar", 15, 6, 1},
+      {"withheld", "uchar", 15, 7, 1},
+      {"scan_angle_rank", "char", 16},
+      {"user_data", "uchar", 17},
+      {"point_source_id", "ushort", 18}};
+  static const std::vector<LasField> kExtended = {
+      {"intensity", "ushort", 12},
+      {"return_number", "uchar", 14, 0, 4},
+      {"number_of_returns", "uchar", 14, 4, 4},
+      {"synthetic", "uchar", 15, 0, 1},
+      {"key_point", "uchar", 15, 1, 1},
+      {"withheld", "uchar", 15, 2, 1},
+      {"overlap", "uchar", 15, 3, 1},
+      {"scanner_channel", "uchar", 15, 4, 2},
+      {"scan_direction_flag", "uchar", 15, 6, 1},
+      {"edge_of_flight_line", "uchar", 15, 7, 1},
+      {"classification", "uchar", 16},
+      {"user_data", "uchar", 17},
+      {"scan_angle", "short", 18},
+      {"point_source_id", "ushort", 20},
+      {"gps_time", "double", 22}};
+  static const std::vector<LasField> kFormats[] = {
+      kLegacy,
+      [] {
+        auto f = kLegacy;
+        f.push_back({"gps_time", "double", 20});
+        return f;
+      }(),
+      [] {
+        auto f = kLegacy;
+        f.insert(f.end(), {{"red", "ushort", 20}, {"green", "ushort", 22}, {"blue", "ushort", 24}});
+        return f;
+      }(),
+      [] {
+        auto f = kLegacy;
+        f.insert(f.end(), {{"gps_time", "double", 20},
+                           {"red", "ushort", 28},
+                           {"green", "ushort", 30},
+                           {"blue", "ushort", 32}});
+        return f;
+      }(),
+      {}, {},  // 4, 5: waveform
+      kExtended,
+      [] {
+        auto f = kExtended;
+        f.insert(f.end(), {{"red", "ushort", 30}, {"green", "ushort", 32}, {"blue", "ushort", 34}});
+        return f;
+      }(),
+      [] {
+        auto f = kExtended;
+        f.insert(f.end(), {{"red", "ushort", 30},
+                           {"green", "ushort", 32},
+                           {"blue", "ushort", 34},
+                           {"nir", "ushort", 36}});
+        return f;
+      }()};
+  return kFormats[format];
+}
+
+template <typename T>
+T Get(const char* bytes) {
+  T value;
+  std::memcpy(&value, bytes, sizeof(T));
+  return value;
+}
+
+template <typename T>
+void Put(char* bytes, T value) {
+  std::memcpy(bytes, &value, sizeof(T));
+}
+
+double ReadValue(const char* record, const LasField& field) {
+  const char* at = record + field.offset;
+  if (field.bits > 0) {
+    return (static_cast<uint8_t>(*at) >> field.shift) & ((1 << field.bits) - 1);
+  }
+  const std::string type = field.type;
+  if (type == "uchar") return Get<uint8_t>(at);
+  if (type == "char") return Get<int8_t>(at);
+  if (type == "ushort") return Get<uint16_t>(at);
+  if (type == "short") return Get<int16_t>(at);
+  return Get<double>(at);
+}
+
+// `value` rounded and clamped to [low, high].
+long long Clamped(double value, long long low, long long high) {
+  if (std::isnan(value)) return 0;
+  return static_cast<long long>(std::clamp(std::round(value), static_cast<double>(low),
+                                           static_cast<double>(high)));
+}
+
+void WriteValue(const LasField& field, double value, char* record) {
+  char* at = record + field.offset;
+  if (field.bits > 0) {
+    const int mask = ((1 << field.bits) - 1) << field.shift;
+    const int bits = static_cast<int>(Clamped(value, 0, (1 << field.bits) - 1)) << field.shift;
+    *at = static_cast<char>((static_cast<uint8_t>(*at) & ~mask) | bits);
+    return;
+  }
+  const std::string type = field.type;
+  if (type == "uchar") return Put<uint8_t>(at, static_cast<uint8_t>(Clamped(value, 0, 255)));
+  if (type == "char") return Put<int8_t>(at, static_cast<int8_t>(Clamped(value, -128, 127)));
+  if (type == "ushort") return Put<uint16_t>(at, static_cast<uint16_t>(Clamped(value, 0, 65535)));
+  if (type == "short") {
+    return Put<int16_t>(at, static_cast<int16_t>(Clamped(value, -32768, 32767)));
+  }
+  Put<double>(at, value);
+}
+
+int HeaderSize(int version_minor) {
+  return version_minor >= 4 ? 375 : version_minor == 3 ? 235 : 227;
+}
+
+bool IsLittleEndianHost() {
+  const uint16_t one = 1;
+  return *reinterpret_cast<const uint8_t*>(&one) == 1;
+}
+
+// Reads `count` bytes or fails naming what ended early.
+void ReadExactly(std::istream& in, char* bytes, size_t count, const std::string& name,
+                 const char* what) {
+  if (!in.read(bytes, static_cast<std::streamsize>(count))) {
+    Fail(name, std::string("the file ends inside ") + what);
+  }
+}
+
+}  // namespace
+
+int LasRecordLength(int format) {
+  static const int kLengths[] = {20, 28, 26, 34, 0, 0, 30, 36, 38};
+  return format >= 0 && format <= 8 ? kLengths[format] : 0;
+}
+
+PointCloud ReadLas(const std::string& name, std::istream& in) {
+  if (!IsLittleEndianHost()) Fail(name, "LAS files are read on little-endian hosts only");
+  char header[375] = {};
+  ReadExactly(in, header, 227, name, "the LAS header");
+  if (std::memcmp(header, "LASF", 4) != 0) Fail(name, "not a LAS file (no 'LASF' signature)");
+  LasLayout layout;
+  const uint8_t major = Get<uint8_t>(header + 24);
+  layout.version_minor = Get<uint8_t>(header + 25);
+  if (major != 1 || layout.version_minor > 4) {
+    Fail(name, "LAS version " + std::to_string(major) + "." +
+                   std::to_string(layout.version_minor) + " is not supported (1.0-1.4 are)");
+  }
+  const uint16_t header_size = Get<uint16_t>(header + 94);
+  const uint32_t point_offset = Get<uint32_t>(header + 96);
+  layout.number_of_vlrs = Get<uint32_t>(header + 100);
+  const uint8_t format_byte = Get<uint8_t>(header + 104);
+  layout.record_length = Get<uint16_t>(header + 105);
+  if (format_byte & 0xC0) {
+    Fail(name, "is LAZ (compressed LAS), which lpd does not read: decompress it first, e.g. "
+               "`laszip -i in.laz -o in.las` or `pdal translate in.laz in.las`");
+  }
+  layout.point_format = format_byte;
+  const int core = LasRecordLength(layout.point_format);
+  if (core == 0) {
+    Fail(name, "LAS point format " + std::to_string(layout.point_format) +
+                   " is not supported (formats 0-3 and 6-8 are)");
+  }
+  if (layout.record_length < core) {
+    Fail(name, "point record length " + std::to_string(layout.record_length) +
+                   " is shorter than format " + std::to_string(layout.point_format) + "'s " +
+                   std::to_string(core) + " bytes");
+  }
+  if (header_size < HeaderSize(std::min<int>(layout.version_minor, 2)) ||
+      header_size > point_offset) {
+    Fail(name, "inconsistent header size " + std::to_string(header_size) +
+                   " and point data offset " + std::to_string(point_offset));
+  }
+  // The rest of the header (1.3 and 1.4 fields, and any bytes a writer added).
+  std::vector<char> rest(header_size - 227);
+  ReadExactly(in, rest.data(), rest.size(), name, "the LAS header");
+  std::memcpy(header + 227, rest.data(), std::min<size_t>(rest.size(), 375 - 227));
+  uint64_t count = Get<uint32_t>(header + 107);
+  if (layout.version_minor >= 4 && header_size >= 375 && count == 0) {
+    count = Get<uint64_t>(header + 247);
+  }
+  layout.file_source_id = Get<uint16_t>(header + 4);
+  layout.global_encoding = Get<uint16_t>(header + 6);
+  std::memcpy(layout.project_id, header + 8, 16);
+  layout.system_identifier.assign(header + 26, strnlen(header + 26, 32));
+  for (int c = 0; c < 3; ++c) {
+    layout.scale[c] = Get<double>(header + 131 + 8 * c);
+    layout.offset[c] = Get<double>(header + 155 + 8 * c);
+    if (!std::isfinite(layout.scale[c]) || layout.scale[c] == 0.0 ||
+        !std::isfinite(layout.offset[c])) {
+      Fail(name, "invalid scale or offset in the LAS header");
+    }
+  }
+  layout.vlrs.resize(point_offset - header_size);
+  ReadExactly(in, layout.vlrs.data(), layout.vlrs.size(), name, "the variable-length records");
+  if (count == 0) Fail(name, "the file contains no points");
+
+  PointCloud cloud;
+  const std::vector<LasField>& fields = FieldsOf(layout.point_format);
+  const int extra_bytes = layout.record_length - core;
+  for (const LasField& field : fields) cloud.attributes.push_back({field.name, field.type, {}});
+  for (int b = 0; b < extra_bytes; ++b) {
+    cloud.attributes.push_back({"extra_byte_" + std::to_string(b), "uchar", {}});
+  }
+  std::vector<char> record(layout.record_length);
+  // Grown as records arrive, so that a header claiming more points than the file holds
+  // costs nothing before the data runs out.
+  for (uint64_t i = 0; i < count; ++i) {
+    if (!in.read(record.data(), layout.record_length)) {
+      Fail(name, "the file ends inside point record " + std::to_string(i) + " of " +
+                     std::to_string(count));
+    }
+    energy::Point3 p;
+    for (int c = 0; c < 3; ++c) {
+      p[c] = Get<int32_t>(record.data() + 4 * c) * layout.scale[c] + layout.offset[c];
+    }
+    if (!p.allFinite()) Fail(name, "point " + std::to_string(i) + " has a non-finite coordinate");
+    cloud.points.push_back(p);
+    for (size_t f = 0; f < fields.size(); ++f) {
+      cloud.attributes[f].values.push_back(ReadValue(record.data(), fields[f]));
+    }
+    for (int b = 0; b < extra_bytes; ++b) {
+      cloud.attributes[fields.size() + b].values.push_back(
+          static_cast<uint8_t>(record[core + b]));
+    }
+  }
+  cloud.las = std::make_shared<LasLayout>(std::move(layout));
+  return cloud;
+}
+
+void WriteLas(std::ostream& out, const PointCloud& cloud, const std::string& name) {
+  if (!IsLittleEndianHost()) Fail(name, "LAS files are written on little-endian hosts only");
+  LasLayout layout;
+  if (cloud.las) {
+    layout = *cloud.las;
+  } else if (!cloud.points.empty()) {
+    // Integer coordinates of at most 1e9 steps across the extent (int32 holds 2.1e9).
+    energy::Point3 low = cloud.points[0], high = cloud.points[0];
+    for (const energy::Point3& p : cloud.points) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    const double extent = std::max((high - low).maxCoeff(), 1e-300);
+    const double scale = std::pow(10.0, std::ceil(std::log10(extent / 1e9)));
+    for (int c = 0; c < 3; ++c) {
+      layout.scale[c] = scale;
+      layout.offset[c] = low[c];
+    }
+  }
+  const int core = LasRecordLength(layout.point_format);
+  const std::vector<LasField>& fields = FieldsOf(layout.point_format);
+  const int extra_bytes = layout.record_length - core;
+  std::vector<const std::vector<double>*> values(fields.size() + extra_bytes, nullptr);
+  for (size_t f = 0; f < values.size(); ++f) {
+    const std::string field_name =
+        f < fields.size() ? fields[f].name : "extra_byte_" + std::to_string(f - fields.size());
+    if (const PointAttribute* attribute = cloud.FindAttribute(field_name)) {
+      values[f] = &attribute->values;
+    }
+  }
+  const int returns_field = static_cast<int>(
+      std::find_if(fields.begin(), fields.end(),
+                   [](const LasField& f) { return std::string(f.name) == "return_number"; }) -
+      fields.begin());
+
+  // The records first, for the header's bounds and counts.
+  const size_t n = cloud.points.size();
+  std::vector<char> records(n * layout.record_length, 0);
+  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+  uint64_t by_return[15] = {};
+  for (size_t i = 0; i < n; ++i) {
+    char* record = records.data() + i * layout.record_length;
+    for (int c = 0; c < 3; ++c) {
+      const double steps = std::round((cloud.points[i][c] - layout.offset[c]) / layout.scale[c]);
+      if (!(std::abs(steps) <= std::numeric_limits<int32_t>::max())) {
+        Fail(name, "point " + std::to_string(i) + " does not fit the LAS scale and offset");
+      }
+      Put<int32_t>(record + 4 * c, static_cast<int32_t>(steps));
+      const double written = steps * layout.scale[c] + layout.offset[c];
+      low[c] = i == 0 ? written : std::min(low[c], written);
+      high[c] = i == 0 ? written : std::max(high[c], written);
+    }
+    for (size_t f = 0; f < fields.size(); ++f) {
+      if (values[f]) WriteValue(fields[f], (*values[f])[i], record);
+    }
+    for (int b = 0; b < extra_bytes; ++b) {
+      if (values[fields.size() + b]) {
+        record[core + b] = static_cast<char>(Clamped((*values[fields.size() + b])[i], 0, 255));
+      }
+    }
+    const int return_number = static_cast<int>(ReadValue(record, fields[returns_field]));
+    if (return_number >= 1 && return_number <= 15) ++by_return[return_number - 1];
+  }
+
+  const int header_size = HeaderSize(layout.version_minor);
+  std::vector<char> header(header_size, 0);
+  std::memcpy(header.data(), "LASF", 4);
+  Put<uint16_t>(header.data() + 4, layout.file_source_id);
+  // No waveform packets are written (bits 1 and 2).
+  Put<uint16_t>(header.data() + 6, layout.global_encoding & ~uint16_t{6});
+  std::memcpy(header.data() + 8, layout.project_id, 16);
+  Put<uint8_t>(header.data() + 24, 1);
+  Put<uint8_t>(header.data() + 25, layout.version_minor);
+  std::memcpy(header.data() + 26, layout.system_identifier.data(),
+              std::min<size_t>(layout.system_identifier.size(), 32));
+  std::memcpy(header.data() + 58, "lpd", 3);
+  Put<uint16_t>(header.data() + 94, static_cast<uint16_t>(header_size));
+  Put<uint32_t>(header.data() + 96, static_cast<uint32_t>(header_size + layout.vlrs.size()));
+  Put<uint32_t>(header.data() + 100, layout.number_of_vlrs);
+  Put<uint8_t>(header.data() + 104, layout.point_format);
+  Put<uint16_t>(header.data() + 105, layout.record_length);
+  // Legacy counts: formats 0-5 whose counts fit 32 bits (LAS 1.4 leaves them 0 otherwise).
+  const bool legacy = layout.point_format <= 5 && n <= std::numeric_limits<uint32_t>::max();
+  if (legacy) {
+    Put<uint32_t>(header.data() + 107, static_cast<uint32_t>(n));
+    for (int r = 0; r < 5; ++r) {
+      Put<uint32_t>(header.data() + 111 + 4 * r, static_cast<uint32_t>(by_return[r]));
+    }
+  } else if (layout.version_minor < 4) {
+    Fail(name, "LAS 1." + std::to_string(layout.version_minor) + " cannot hold " +
+                   std::to_string(n) + " points of format " +
+                   std::to_string(layout.point_format));
+  }
+  for (int c = 0; c < 3; ++c) {
+    Put<double>(header.data() + 131 + 8 * c, layout.scale[c]);
+    Put<double>(header.data() + 155 + 8 * c, layout.offset[c]);
+    Put<double>(header.data() + 179 + 16 * c, high[c]);
+    Put<double>(header.data() + 187 + 16 * c, low[c]);
+  }
+  if (layout.version_minor >= 4) {
+    Put<uint64_t>(header.data() + 247, n);
+    for (int r = 0; r < 15; ++r) Put<uint64_t>(header.data() + 255 + 8 * r, by_return[r]);
+  }
+  out.write(header.data(), header_size);
+  out.write(layout.vlrs.data(), static_cast<std::streamsize>(layout.vlrs.size()));
+  out.write(records.data(), static_cast<std::streamsize>(records.size()));
+}
+
+}  // namespace lpd::io

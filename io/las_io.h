@@ -1,0 +1,55 @@
+// lpd: LAS 1.0-1.4 point clouds (ASPRS LAS specification), read and written by the project:
+// Debian 12 packages no LAS library (no LASlib, PDAL or laspy). Point data record formats 0-3
+// and 6-8; the waveform formats (4, 5, 9, 10) and LAZ (compressed) files are refused by name.
+//
+// Every field of a record becomes a point attribute with its LAS type: intensity,
+// return_number, number_of_returns, scan_direction_flag, edge_of_flight_line,
+// classification, synthetic, key_point, withheld, overlap and scanner_channel (formats 6-8),
+// scan_angle_rank (0-3) or scan_angle (6-8), user_data, point_source_id, gps_time, red, green,
+// blue, nir, and each extra byte past the format's record as extra_byte_N. The header's
+// scale and offset, format, version, identifiers and variable-length records (a coordinate
+// system, say) travel with the cloud (LasLayout), so that a LAS written from it keeps them; a
+// cloud from another format is written as LAS 1.2 format 0 with a scale of its extent / 1e9.
+#ifndef LPD_IO_LAS_IO_H_
+#define LPD_IO_LAS_IO_H_
+
+#include <cstdint>
+#include <istream>
+#include <string>
+#include <vector>
+
+namespace lpd::io {
+
+struct PointCloud;
+
+struct LasLayout {
+  uint8_t version_minor = 2;     // LAS 1.x
+  uint8_t point_format = 0;      // 0-3 or 6-8
+  uint16_t record_length = 20;   // the format's record plus the extra bytes
+  uint16_t file_source_id = 0;
+  uint16_t global_encoding = 0;
+  uint8_t project_id[16] = {};
+  std::string system_identifier = "lpd";
+  double scale[3] = {0.001, 0.001, 0.001};
+  double offset[3] = {0.0, 0.0, 0.0};
+  uint32_t number_of_vlrs = 0;
+  std::vector<char> vlrs;        // the variable-length records, byte for byte
+};
+
+// The record length of point format `format` without extra bytes, or 0 for a format lpd does
+// not read.
+int LasRecordLength(int format);
+
+// Reads a LAS file from `in` (no seeking, so pipes work); `name` stands for it in messages.
+// Throws std::runtime_error "NAME: reason" on anything malformed, truncated or unsupported.
+PointCloud ReadLas(const std::string& name, std::istream& in);
+
+// Writes `cloud` as LAS to `out`: with cloud.las when it has one (its version, format, scale,
+// offset and records), else as LAS 1.2 format 0. Fields come from the attributes of the same
+// names (0 when missing); the header's bounds, counts and counts by return are those of the
+// points written. Throws std::runtime_error if a coordinate does not fit the scale.
+void WriteLas(std::ostream& out, const PointCloud& cloud, const std::string& name);
+
+}  // namespace lpd::io
+
+#endif  // LPD_IO_LAS_IO_H_
