@@ -21,7 +21,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-PLY_TYPES = {"float": "f4", "double": "f8", "uchar": "u1", "int": "i4", "uint": "u4"}
+PLY_TYPES = {"float": "f4", "double": "f8", "char": "i1", "uchar": "u1", "short": "i2",
+             "ushort": "u2", "int": "i4", "uint": "u4"}
 VIEW = dict(elev=28, azim=-58)  # one fixed viewpoint for every rendering
 
 
