@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/denoise_flags.h"
 #include "io/interruption.h"
+#include "io/out_of_memory.h"
 #include "lpd/parameters.h"
 
 namespace {
@@ -159,6 +160,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   lpd::io::InstallInterruptionHandlers();
+  lpd::io::InstallOutOfMemoryHandler();
   try {
     return command.run(positional);
   } catch (const lpd::io::Interrupted& interrupted) {

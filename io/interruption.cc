@@ -21,15 +21,9 @@ char slot_path[kSlots][kPathBytes];
 
 const char* SignalName(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTERM"; }
 
-// Async-signal-safe: unlink, rmdir, write and _exit only. Files first, then the
-// directories they were in.
+// Async-signal-safe: unlink, rmdir, write and _exit only.
 [[noreturn]] void RemoveTemporaryFilesAndExit(int signal) {
-  for (int s = 0; s < kSlots; ++s) {
-    if (slot_state[s].load() == 2) ::unlink(slot_path[s]);
-  }
-  for (int s = 0; s < kSlots; ++s) {
-    if (slot_state[s].load() == 2) ::rmdir(slot_path[s]);
-  }
+  RemoveTemporaryFiles();
   static const char kMessage[] = "lpd: interrupted; no output written\n";
   [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, kMessage, sizeof(kMessage) - 1);
   ::_exit(128 + signal);
@@ -46,6 +40,15 @@ void OnSignal(int signal) {
 }
 
 }  // namespace
+
+void RemoveTemporaryFiles() {
+  for (int s = 0; s < kSlots; ++s) {
+    if (slot_state[s].load() == 2) ::unlink(slot_path[s]);
+  }
+  for (int s = 0; s < kSlots; ++s) {
+    if (slot_state[s].load() == 2) ::rmdir(slot_path[s]);
+  }
+}
 
 void InstallInterruptionHandlers() {
   static const bool installed = [] {

@@ -42,6 +42,10 @@ void ThrowIfInterrupted();
 int RegisterTemporaryFile(const std::string& path);
 void UnregisterTemporaryFile(int slot);
 
+// Removes every registered temporary file, then the registered directories that are empty
+// (async-signal-safe and allocation-free: for handlers that end the process).
+void RemoveTemporaryFiles();
+
 }  // namespace lpd::io
 
 #endif  // LPD_IO_INTERRUPTION_H_

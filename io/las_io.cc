@@ -156,6 +156,7 @@ bool IsLittleEndianHost() {
 // Reads `count` bytes or fails naming what ended early.
 void ReadExactly(std::istream& in, char* bytes, size_t count, const std::string& name,
                  const char* what) {
+  if (count == 0) return;
   if (!in.read(bytes, static_cast<std::streamsize>(count))) {
     Fail(name, std::string("the file ends inside ") + what);
   }
@@ -208,7 +209,9 @@ PointCloud ReadLas(const std::string& name, std::istream& in) {
   // The rest of the header (1.3 and 1.4 fields, and any bytes a writer added).
   std::vector<char> rest(header_size - 227);
   ReadExactly(in, rest.data(), rest.size(), name, "the LAS header");
-  std::memcpy(header + 227, rest.data(), std::min<size_t>(rest.size(), 375 - 227));
+  if (!rest.empty()) {
+    std::memcpy(header + 227, rest.data(), std::min<size_t>(rest.size(), 375 - 227));
+  }
   uint64_t count = Get<uint32_t>(header + 107);
   if (layout.version_minor >= 4 && header_size >= 375 && count == 0) {
     count = Get<uint64_t>(header + 247);
@@ -225,8 +228,14 @@ PointCloud ReadLas(const std::string& name, std::istream& in) {
       Fail(name, "invalid scale or offset in the LAS header");
     }
   }
-  layout.vlrs.resize(point_offset - header_size);
-  ReadExactly(in, layout.vlrs.data(), layout.vlrs.size(), name, "the variable-length records");
+  // In chunks, so that an offset past the end of the file allocates no more than the file has.
+  for (uint32_t remaining = point_offset - header_size; remaining > 0;) {
+    const uint32_t chunk = std::min<uint32_t>(remaining, 1 << 16);
+    const size_t start = layout.vlrs.size();
+    layout.vlrs.resize(start + chunk);
+    ReadExactly(in, layout.vlrs.data() + start, chunk, name, "the variable-length records");
+    remaining -= chunk;
+  }
   if (count == 0) Fail(name, "the file contains no points");
 
   PointCloud cloud;
