@@ -83,24 +83,49 @@ ResultRecord ResultRecord::FromJson(const std::string& line) {
 
 ResultStore::ResultStore(const std::string& directory, std::vector<std::string> csv_columns)
     : directory_(directory), columns_(std::move(csv_columns)) {
-  std::ifstream in(jsonl_path());
+  std::ifstream in(jsonl_path(), std::ios::binary);
   std::string line;
   long number = 0;
+  std::streamoff whole_lines = 0;  // bytes up to the end of the last good record
+  bool torn = false;
   while (std::getline(in, line)) {
     ++number;
-    if (line.empty()) continue;
+    const bool ends_with_newline = !in.eof();
+    if (line.empty()) {
+      whole_lines = in.tellg();
+      continue;
+    }
     ResultRecord record;
     try {
       record = ResultRecord::FromJson(line);
+      if (!ends_with_newline) throw std::runtime_error("no line end");
     } catch (const std::runtime_error& reason) {
-      if (in.peek() == EOF) break;  // a last line cut short by an interrupted run: redo it
-      throw std::runtime_error(jsonl_path() + ":" + std::to_string(number) + ": " + reason.what());
+      if (in.peek() != EOF) {
+        throw std::runtime_error(jsonl_path() + ":" + std::to_string(number) + ": " +
+                                 reason.what());
+      }
+      torn = true;  // a last record cut short (a full disk, a killed run): dropped below
+      break;
     }
     const std::string id = record.Get("cell_id");
     if (id.empty()) {
       throw std::runtime_error(jsonl_path() + ":" + std::to_string(number) + ": no cell_id");
     }
     if (done_.insert(id).second) records_.push_back(std::move(record));
+    whole_lines = in.eof() ? whole_lines : static_cast<std::streamoff>(in.tellg());
+  }
+  if (torn) {
+    in.close();
+    std::error_code error;
+    std::filesystem::resize_file(jsonl_path(), static_cast<uintmax_t>(whole_lines), error);
+    if (error) {
+      throw std::runtime_error(jsonl_path() + ":" + std::to_string(number) +
+                               ": a record cut short that cannot be removed: " + error.message());
+    }
+    std::fprintf(stderr,
+                 "warning: %s:%ld: dropped a record cut short by an earlier run; its cell runs "
+                 "again\n",
+                 jsonl_path().c_str(), number);
   }
 }
 
@@ -115,10 +140,21 @@ void ResultStore::Append(const ResultRecord& record) {
   std::filesystem::create_directories(directory_, error);
   if (error) throw std::runtime_error(directory_ + ": cannot create directory: " + error.message());
   {
-    std::ofstream out(jsonl_path(), std::ios::app);
-    out << record.ToJson() << "\n";
+    // Whole or not at all: a record that cannot be written completely is cut off again.
+    std::error_code size_error;
+    const uintmax_t size = std::filesystem::exists(jsonl_path())
+                               ? std::filesystem::file_size(jsonl_path(), size_error)
+                               : 0;
+    std::ofstream out(jsonl_path(), std::ios::app | std::ios::binary);
+    const std::string text = record.ToJson() + "\n";
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
     out.flush();
-    if (!out) throw std::runtime_error(jsonl_path() + ": cannot append a record");
+    if (!out) {
+      out.close();
+      std::error_code error;
+      if (!size_error) std::filesystem::resize_file(jsonl_path(), size, error);
+      throw std::runtime_error(jsonl_path() + ": cannot append a record (disk full?)");
+    }
   }
   done_.insert(record.Get("cell_id"));
   records_.push_back(record);

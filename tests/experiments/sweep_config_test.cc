@@ -120,6 +120,42 @@ TEST(SweepResults, RecordsRoundTripThroughJson) {
   EXPECT_EQ(back.ToJson(), record.ToJson());
 }
 
+// A record cut short (a full disk) is dropped when the results are read again, and the next
+// record starts a line of its own instead of being glued onto the torn one.
+TEST(SweepResults, ATornLastRecordIsDroppedAndTheNextOneStartsAFreshLine) {
+  const std::string directory = ::testing::TempDir() + "/torn_results";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  auto record = [](const char* id) {
+    ResultRecord r;
+    r.Add("cell_id", std::string(id));
+    r.Add("mse", 0.5);
+    return r;
+  };
+  {
+    std::ofstream out(directory + "/results.jsonl");
+    out << record("a").ToJson() << "\n" << record("b").ToJson() << "\n";
+    const std::string torn = record("c").ToJson();
+    out << torn.substr(0, torn.size() / 2);
+  }
+  {
+    ResultStore store(directory, {"cell_id", "mse"});
+    EXPECT_TRUE(store.Contains("a") && store.Contains("b"));
+    EXPECT_FALSE(store.Contains("c"));
+    store.Append(record("c"));
+  }
+  const ResultStore again(directory, {"cell_id", "mse"});
+  EXPECT_TRUE(again.Contains("a") && again.Contains("b") && again.Contains("c"));
+  std::ifstream in(directory + "/results.jsonl");
+  std::string line;
+  int lines = 0;
+  while (std::getline(in, line)) {
+    EXPECT_NO_THROW(ResultRecord::FromJson(line)) << line;
+    ++lines;
+  }
+  EXPECT_EQ(lines, 3);
+}
+
 // The methods of the runner tests: the input as is, and one lpd iteration.
 const char* kNoneAndOneLpdIteration = R"(methods:
   - method: none
