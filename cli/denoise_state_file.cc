@@ -1,5 +1,6 @@
 #include "cli/denoise_state_file.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -18,21 +19,41 @@ constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
 // weights than it was written with, so it is refused.
 // 4: the saved parameters include the progress test (progress_tolerance). A version-3 state
 // was written before it existed and resumes with it off, as it would have run then.
-constexpr uint32_t kVersion = 4;
+// 5: a checksum of every byte follows the end mark, so that a changed byte is refused
+// rather than resumed from; versions 3 and 4 have none.
+constexpr uint32_t kVersion = 5;
 constexpr uint32_t kOldestVersion = 3;
 constexpr uint32_t kByteOrderMark = 0x01020304u;
+
+// FNV-1a, 64 bits: a checksum against changed bytes (a flipped bit, an edited field), not
+// against an adversary who recomputes it.
+class Checksum {
+ public:
+  void Add(const char* bytes, size_t count) {
+    for (size_t i = 0; i < count; ++i) {
+      value_ = (value_ ^ static_cast<uint8_t>(bytes[i])) * 0x100000001b3ull;
+    }
+  }
+  uint64_t value() const { return value_; }
+
+ private:
+  uint64_t value_ = 0xcbf29ce484222325ull;
+};
 
 class Writer {
  public:
   explicit Writer(std::ostream& out) : out_(out) {}
   template <typename T>
   void Value(const T& value) {
-    out_.write(reinterpret_cast<const char*>(&value), sizeof(T));
+    Array(&value, 1);
   }
   template <typename T>
   void Array(const T* values, size_t count) {
-    out_.write(reinterpret_cast<const char*>(values), sizeof(T) * count);
+    const char* bytes = reinterpret_cast<const char*>(values);
+    checksum_.Add(bytes, sizeof(T) * count);
+    out_.write(bytes, sizeof(T) * count);
   }
+  uint64_t checksum() const { return checksum_.value(); }
   void Text(const std::string& text) {
     Value(static_cast<uint32_t>(text.size()));
     Array(text.data(), text.size());
@@ -40,6 +61,7 @@ class Writer {
 
  private:
   std::ostream& out_;
+  Checksum checksum_;
 };
 
 class Reader {
@@ -66,8 +88,11 @@ class Reader {
     if (count > remaining_ / sizeof(T)) Fail("truncated state file");
     in_.read(reinterpret_cast<char*>(values), sizeof(T) * count);
     if (!in_) Fail("read error");
+    checksum_.Add(reinterpret_cast<const char*>(values), sizeof(T) * count);
     remaining_ -= sizeof(T) * count;
   }
+  // Of the bytes read so far.
+  uint64_t checksum() const { return checksum_.value(); }
   template <typename T>
   void Vector(uint64_t count, std::vector<T>* values) {
     if (count > remaining_ / sizeof(T)) Fail("truncated state file");
@@ -85,7 +110,18 @@ class Reader {
   std::string path_;
   std::ifstream in_;
   uint64_t remaining_ = 0;
+  Checksum checksum_;
 };
+
+// Fails naming `what` unless every value is finite.
+template <typename Values>
+void RequireFinite(const Values& values, const char* what, const Reader& in) {
+  for (const auto& value : values) {
+    if (!std::isfinite(static_cast<double>(value))) {
+      in.Fail(std::string("corrupt state file (non-finite ") + what + ")");
+    }
+  }
+}
 
 // `count` points of three native doubles.
 energy::PointList ReadPoints(int32_t count, Reader* in) {
@@ -147,6 +183,7 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   out.Value(static_cast<uint32_t>(progress.energy_history.size()));
   out.Array(progress.energy_history.data(), progress.energy_history.size());
   out.Array(kEndMark, sizeof(kEndMark));
+  out.Value(out.checksum());
   file.Commit();
 }
 
@@ -166,6 +203,9 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   }
   SavedDenoiseRun run;
   run.num_threads = in.Value<int32_t>();
+  if (run.num_threads < 1 || run.num_threads > 1024) {
+    in.Fail("corrupt state file (thread count " + std::to_string(run.num_threads) + ")");
+  }
   if (version == 3) run.parameters.emplace_back("progress_tolerance", "0");
   const uint32_t num_parameters = in.Value<uint32_t>();
   for (uint32_t p = 0; p < num_parameters; ++p) {
@@ -178,15 +218,26 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   in.Array(problem.frame.center.data(), 3);
   problem.frame.scale = in.Value<double>();
   const double min_squared_distance_ratio = in.Value<double>();
+  if (!problem.frame.center.allFinite() || !(problem.frame.scale > 0.0) ||
+      !std::isfinite(problem.frame.scale) || !(min_squared_distance_ratio >= 0.0) ||
+      !std::isfinite(min_squared_distance_ratio)) {
+    in.Fail("corrupt state file (frame)");
+  }
   const int32_t n = in.Value<int32_t>();
   const int32_t k = in.Value<int32_t>();
   if (n < 2 || k < 1 || k >= n) in.Fail("corrupt state file (point count or k)");
   in.Vector(n, &state.order);
   problem.points = ReadPoints(n, &in);
+  for (const energy::Point3& p : problem.points) {
+    if (!p.allFinite()) in.Fail("corrupt state file (non-finite point)");
+  }
   const int32_t num_left_out = in.Value<int32_t>();
   if (num_left_out < 0) in.Fail("corrupt state file (left-out point count)");
   in.Vector(num_left_out, &state.left_out);
   state.left_out_points = ReadPoints(num_left_out, &in);
+  for (const energy::Point3& p : state.left_out_points) {
+    if (!p.allFinite()) in.Fail("corrupt state file (non-finite point)");
+  }
   // Every input index once, over the solved and the left-out points.
   const int64_t total = static_cast<int64_t>(n) + num_left_out;
   std::vector<uint8_t> seen(total, 0);
@@ -218,6 +269,10 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   v.s.resize(num_pairs);
   in.Array(v.m.data(), v.m.size());
   in.Array(v.s.data(), v.s.size());
+  if (!v.h.allFinite() || !v.t.allFinite() || !v.l.allFinite() || !v.m.allFinite() ||
+      !v.s.allFinite()) {
+    in.Fail("corrupt state file (non-finite planes or line processes)");
+  }
 
   solvers::MinimizerProgress& progress = state.progress;
   progress.iterations = in.Value<int32_t>();
@@ -226,11 +281,23 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   progress.gnc.mu_m.current = in.Value<double>();
   progress.gnc.stage_iterations = in.Value<int32_t>();
   in.Vector(in.Value<uint32_t>(), &progress.energy_history);
+  RequireFinite(progress.energy_history, "energy", in);
+  if (progress.iterations < 0 || progress.gnc.stage_iterations < 0 ||
+      !(std::isnan(progress.mu_l) || progress.mu_l > 0.0)) {
+    in.Fail("corrupt state file (progress)");
+  }
   char end[sizeof(kEndMark)];
   in.Array(end, sizeof(end));
-  if (std::memcmp(end, kEndMark, sizeof(kEndMark)) != 0 || in.remaining() != 0) {
+  if (std::memcmp(end, kEndMark, sizeof(kEndMark)) != 0) {
     in.Fail("corrupt state file (bad end mark)");
   }
+  if (version >= 5) {
+    const uint64_t computed = in.checksum();
+    if (in.Value<uint64_t>() != computed) {
+      in.Fail("corrupt state file (checksum mismatch: the file was changed after it was saved)");
+    }
+  }
+  if (in.remaining() != 0) in.Fail("corrupt state file (bytes after the end mark)");
   return run;
 }
 

@@ -111,13 +111,29 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
       EXPECT_NE(std::string(error.what()).find(reason), std::string::npos) << error.what();
     }
   };
-  // The version is the 4 bytes after the 8-byte magic. A version-3 state (from before the
-  // progress test) resumes with the test off; versions outside 3-4 are refused.
-  auto set_version = [&](uint32_t version) {
+  auto write_at = [&](std::streamoff offset, const void* bytes, size_t count) {
     std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
-    file.seekp(8);
-    file.write(reinterpret_cast<const char*>(&version), sizeof(version));
+    file.seekp(offset);
+    file.write(static_cast<const char*>(bytes), static_cast<std::streamsize>(count));
   };
+  EXPECT_NO_THROW(ReadDenoiseState(path));
+  // One changed byte anywhere is caught by the checksum (here in the saved points)...
+  const char flipped = 0x5a;
+  write_at(static_cast<std::streamoff>(size / 2), &flipped, 1);
+  expect_rejected("checksum mismatch");
+  // ...and a field out of its range by its own check first: 100000 threads (after the 8-byte
+  // magic, the version and the byte-order mark).
+  std::remove(path.c_str());
+  WriteDenoiseState(path, state, options, false);
+  const int32_t threads = 100000;
+  write_at(16, &threads, sizeof(threads));
+  expect_rejected("thread count 100000");
+  // Versions 3 and 4 have no checksum. A version-3 state (from before the progress test)
+  // resumes with the test off; versions outside 3-5 are refused.
+  std::remove(path.c_str());
+  WriteDenoiseState(path, state, options, false);
+  std::filesystem::resize_file(path, size - sizeof(uint64_t));
+  auto set_version = [&](uint32_t version) { write_at(8, &version, sizeof(version)); };
   set_version(3);
   {
     const SavedDenoiseRun old = ReadDenoiseState(path);
@@ -127,8 +143,8 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
     SetDenoiseParameter(old.parameters.front().first, old.parameters.front().second, &resumed);
     EXPECT_EQ(resumed.minimizer.progress_tolerance, 0.0);
   }
-  set_version(5);
-  expect_rejected("state file version 5");
+  set_version(6);
+  expect_rejected("state file version 6");
   set_version(4);
   EXPECT_NE(ReadDenoiseState(path).parameters.front().first, "progress_tolerance");
   std::filesystem::resize_file(path, size / 2);
