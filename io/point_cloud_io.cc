@@ -217,6 +217,26 @@ bool NextContentLine(const std::string& path, std::istream& in, std::string* lin
   return false;
 }
 
+// The numbers of `line`; false if a token is not one.
+bool ParseNumbers(const std::string& line, std::vector<double>* numbers) {
+  numbers->clear();
+  std::istringstream tokens(line);
+  std::string token;
+  while (tokens >> token) {
+    if (token[0] == '#') break;
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end);
+    if (*end != '\0') return false;
+    numbers->push_back(value);
+  }
+  return true;
+}
+
+// OFF and its variants by the header keyword [ST][C][N][4][n]OFF: ST adds 2 texture numbers
+// to each vertex, C a colour (3 or 4 numbers), N a normal (3), 4 a homogeneous w that
+// divides x y z, n a line with the dimension (only 3 is read). Each vertex line must hold
+// exactly those numbers, so that a header claiming more vertices than the file has cannot
+// read face lines ("3 0 1 2") as points. Binary OFF is refused.
 PointList ReadOff(const std::string& path, std::istream& in) {
   std::string line;
   long number = 0;
@@ -227,6 +247,33 @@ PointList ReadOff(const std::string& path, std::istream& in) {
   if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0) {
     Fail(path, number, "not an OFF file (first token '" + magic + "')");
   }
+  std::string prefix = magic.substr(0, magic.size() - 3);
+  auto take = [&prefix](const std::string& flag) {
+    if (prefix.rfind(flag, 0) != 0) return false;
+    prefix.erase(0, flag.size());
+    return true;
+  };
+  const bool texture = take("ST");
+  const bool colour = take("C");
+  const bool normal = take("N");
+  const bool homogeneous = take("4");
+  const bool dimension_line = take("n");
+  if (!prefix.empty()) Fail(path, number, "unknown OFF variant '" + magic + "'");
+  if (line.find("BINARY") != std::string::npos) {
+    Fail(path, number, "binary OFF is not supported");
+  }
+  if (dimension_line) {
+    long dimension = 0;
+    if (!(header >> dimension)) {
+      if (!NextContentLine(path, in, &line, &number)) Fail(path, number, "missing dimension");
+      header = std::istringstream(line);
+      header >> dimension;
+    }
+    if (dimension != 3) {
+      Fail(path, number, "nOFF of dimension " + std::to_string(dimension) +
+                             " is not supported (3 is)");
+    }
+  }
   long num_vertices = -1;
   if (!(header >> num_vertices)) {
     if (!NextContentLine(path, in, &line, &number)) Fail(path, number, "missing vertex count");
@@ -234,17 +281,32 @@ PointList ReadOff(const std::string& path, std::istream& in) {
     counts >> num_vertices;
   }
   if (num_vertices < 0) Fail(path, number, "malformed vertex/face counts");
+  const size_t coordinates = homogeneous ? 4 : 3;
+  const size_t fixed = coordinates + (normal ? 3 : 0) + (texture ? 2 : 0);
   PointList points;
   // The header's count is a claim, not a size to allocate (found by the OFF fuzzer: a count
   // of 2.7e15 asked for 64 PB); past this, the list grows as vertices arrive.
   points.reserve(std::min<long>(num_vertices, 1 << 20));
+  std::vector<double> numbers;
   for (long v = 0; v < num_vertices; ++v) {
     if (!NextContentLine(path, in, &line, &number)) {
       Fail(path, number, "file ends after " + std::to_string(v) + " of " +
                              std::to_string(num_vertices) + " vertices");
     }
-    Point3 p;
-    if (!ParseThreeNumbers(line.c_str(), &p)) Fail(path, number, "malformed vertex line");
+    const bool counted = ParseNumbers(line, &numbers) &&
+                         (numbers.size() == fixed ||
+                          (colour && (numbers.size() == fixed + 3 || numbers.size() == fixed + 4)));
+    if (!counted) {
+      Fail(path, number, "vertex line with " + std::to_string(numbers.size()) +
+                             " numbers where " + magic + " has " + std::to_string(fixed) +
+                             (colour ? " plus a colour" : "") +
+                             " (does the header claim more vertices than the file has?)");
+    }
+    Point3 p(numbers[0], numbers[1], numbers[2]);
+    if (homogeneous) {
+      if (numbers[3] == 0.0) Fail(path, number, "vertex at infinity (w = 0)");
+      p /= numbers[3];
+    }
     CheckFinite(path, number, p);
     points.push_back(p);
   }

@@ -145,6 +145,26 @@ TEST_F(PointCloudIoTest, XyzColumnsBecomeAttributesWhenEveryLineHasThem) {
   EXPECT_TRUE(io::ReadPointCloud(Write("ragged.xyz", "0 0 0 1\n1 1 1\n")).attributes.empty());
 }
 
+// The OFF variants: 4OFF divides by w, nOFF reads its dimension line, C/N/ST carry extra
+// numbers; a header claiming more vertices than there are cannot read faces as points.
+TEST_F(PointCloudIoTest, OffVariantsAreReadOrRefusedByName) {
+  EXPECT_EQ(io::ReadPoints(Write("w.off", "4OFF\n1 0 0\n2 4 6 2\n"))[0], energy::Point3(1, 2, 3));
+  EXPECT_EQ(io::ReadPoints(Write("n.off", "nOFF\n3\n1 0 0\n1 2 3\n"))[0], energy::Point3(1, 2, 3));
+  EXPECT_EQ(io::ReadPoints(Write("n1.off", "nOFF 3 2 0 0\n1 2 3\n4 5 6\n")).size(), 2u);
+  EXPECT_EQ(io::ReadPoints(Write("cn.off", "CNOFF\n1 0 0\n1 2 3 0 0 1 0.5 0.5 0.5 1\n"))[0],
+            energy::Point3(1, 2, 3));
+  EXPECT_NE(ReadError(Write("n4.off", "nOFF\n4\n1 0 0\n1 2 3 4\n")).find("dimension 4"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("bin.off", "OFF BINARY\n")).find("binary OFF"), std::string::npos);
+  EXPECT_NE(ReadError(Write("xoff.off", "QOFF\n1 0 0\n1 2 3\n")).find("unknown OFF variant"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("claims.off", "OFF\n5 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+                .find("claim more vertices"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("w0.off", "4OFF\n1 0 0\n1 2 3 0\n")).find("w = 0"),
+            std::string::npos);
+}
+
 TEST_F(PointCloudIoTest, RepeatedOrListCoordinatesAreRefused) {
   EXPECT_NE(ReadError(Write("twice.ply", "ply\nformat ascii 1.0\nelement vertex 1\n"
                                          "property float x\nproperty float y\nproperty float z\n"
