@@ -1,7 +1,9 @@
 #include "experiments/sweep/sweep_config.h"
 
+#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -20,9 +22,21 @@ int Line(const YAML::Node& node) { return node.Mark().line + 1; }
   throw std::runtime_error(path + ":" + std::to_string(line) + ": " + reason);
 }
 
+// YAML leaves a repeated key to the reader; here it would run cells twice under one id.
+void RefuseRepeatedKeys(const std::string& path, const YAML::Node& map) {
+  std::set<std::string> seen;
+  for (const auto& item : map) {
+    const std::string key = item.first.as<std::string>();
+    if (!seen.insert(key).second) {
+      Fail(path, Line(item.first), "key '" + key + "' appears twice in one mapping");
+    }
+  }
+}
+
 void CheckKeys(const std::string& path, const YAML::Node& map, const std::string& where,
                const std::set<std::string>& allowed) {
   if (!map.IsMap()) Fail(path, Line(map), where + " must be a mapping of key: value");
+  RefuseRepeatedKeys(path, map);
   for (const auto& item : map) {
     const std::string key = item.first.as<std::string>();
     if (!allowed.count(key)) {
@@ -38,14 +52,16 @@ std::string Scalar(const std::string& path, const YAML::Node& node, const std::s
   return node.Scalar();
 }
 
+// An integer in [minimum, maximum] (maximum: what the field holds, or a sane bound).
 long Integer(const std::string& path, const YAML::Node& node, const std::string& key,
-             long minimum) {
+             long minimum, long maximum = std::numeric_limits<int>::max()) {
   const std::string text = Scalar(path, node, key);
   char* end = nullptr;
+  errno = 0;
   const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || value < minimum) {
-    Fail(path, Line(node), "'" + key + "' must be an integer >= " + std::to_string(minimum) +
-                               ", got '" + text + "'");
+  if (text.empty() || *end != '\0' || errno == ERANGE || value < minimum || value > maximum) {
+    Fail(path, Line(node), "'" + key + "' must be an integer in [" + std::to_string(minimum) +
+                               ", " + std::to_string(maximum) + "], got '" + text + "'");
   }
   return value;
 }
@@ -68,6 +84,7 @@ constexpr double kMaxSweepCells = 100000;
 // of its lists (a grid); the key `skip_key` is left out.
 std::vector<ParameterSet> ExpandGrid(const std::string& path, const YAML::Node& map,
                                      const std::string& skip_key) {
+  RefuseRepeatedKeys(path, map);
   std::vector<ParameterSet> grid(1);
   for (const auto& item : map) {
     const std::string key = item.first.as<std::string>();
@@ -82,6 +99,13 @@ std::vector<ParameterSet> ExpandGrid(const std::string& path, const YAML::Node& 
       }
     } else {
       Fail(path, Line(item.second), "'" + key + "' must be a value or a non-empty list");
+    }
+    for (size_t a = 0; a < values.size(); ++a) {
+      for (size_t b = 0; b < a; ++b) {
+        if (values[a].text == values[b].text) {
+          Fail(path, values[a].line, "'" + key + "' lists " + values[a].text + " twice");
+        }
+      }
     }
     if (static_cast<double>(grid.size()) * values.size() > kMaxSweepCells) {
       Fail(path, Line(item.second),
@@ -142,7 +166,7 @@ DatasetConfig LoadDataset(const std::string& path, const YAML::Node& node) {
   }
   if (node["points"]) {
     if (!dataset.file.empty()) Fail(path, Line(node["points"]), "'points' is for shape or mesh");
-    dataset.points = static_cast<int>(Integer(path, node["points"], "points", 1));
+    dataset.points = static_cast<int>(Integer(path, node["points"], "points", 1, 1000000000));
   }
   if (node["name"]) {
     dataset.name = Scalar(path, node["name"], "name");
@@ -228,12 +252,15 @@ void LoadSettings(const std::string& path, const YAML::Node& root, SweepConfig* 
   config.name = root["name"] ? Scalar(path, root["name"], "name")
                              : std::filesystem::path(path).stem().string();
   if (root["repetitions"]) config.repetitions = Integer(path, root["repetitions"], "repetitions", 1);
-  if (root["seed"]) config.seed = Integer(path, root["seed"], "seed", 0);
+  if (root["seed"]) {
+    config.seed = Integer(path, root["seed"], "seed", 0, std::numeric_limits<long>::max());
+  }
   if (root["parallel_cells"]) {
     config.parallel_cells = Integer(path, root["parallel_cells"], "parallel_cells", 1);
   }
   if (root["threads_per_cell"]) {
-    config.threads_per_cell = Integer(path, root["threads_per_cell"], "threads_per_cell", 1);
+    config.threads_per_cell =
+        Integer(path, root["threads_per_cell"], "threads_per_cell", 1, 1024);
   }
   if (root["ground_truth_samples"]) {
     config.ground_truth_samples =

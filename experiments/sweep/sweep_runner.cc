@@ -14,6 +14,7 @@
 #include "experiments/baselines/surface_reconstruction.h"
 #include "experiments/evaluation/ground_truth_source.h"
 #include "experiments/evaluation/metrics.h"
+#include "io/atomic_output_file.h"
 #include "io/interruption.h"
 #include "io/machine_info.h"
 #include "io/point_cloud_io.h"
@@ -340,6 +341,15 @@ const std::vector<std::string>& ResultColumns() {
 SweepRunSummary RunSweep(const SweepConfig& config, const SweepRunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<SweepCell> cells = ExpandCells(config);
+  // Before any cell runs: a results directory that cannot be written is found now, not
+  // after every cell was computed.
+  std::error_code error;
+  std::filesystem::create_directories(options.results_directory, error);
+  if (error) {
+    throw std::runtime_error(options.results_directory + ": cannot create the results "
+                             "directory: " + error.message());
+  }
+  io::RefuseExistingOutput(options.results_directory + "/results.csv", /*overwrite=*/true);
   ResultStore store(options.results_directory, ResultColumns());
   SweepRunSummary summary;
   summary.num_cells = static_cast<int>(cells.size());

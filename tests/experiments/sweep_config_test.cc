@@ -74,6 +74,16 @@ TEST(SweepConfig, ErrorsNameTheLineAndTheKey) {
             std::string::npos);
   EXPECT_NE(LoadError(base + "    k: [5, x]\n").find(":5: method lpd: parameter k: 'x' is not an integer or auto"),
             std::string::npos);
+  // A repeated key or value would run cells twice under one id; a count that wrapped to
+  // 2,000 points ran a different sweep.
+  EXPECT_NE(LoadError(base + "    k: 5\n    k: 6\n").find(":6: key 'k' appears twice"),
+            std::string::npos);
+  EXPECT_NE(LoadError(base + "    k: [5, 6, 5]\n").find(":5: 'k' lists 5 twice"),
+            std::string::npos);
+  EXPECT_NE(LoadError("datasets:\n  - shape: cube\n    points: 4294969296\nmethods:\n"
+                      "  - method: none\n")
+                .find(":3: 'points' must be an integer in [1, 1000000000], got '4294969296'"),
+            std::string::npos);
   EXPECT_NE(LoadError("datasets:\n  - shape: teapot\nmethods:\n  - method: none\n")
                 .find(":2: unknown shape 'teapot'"),
             std::string::npos);
