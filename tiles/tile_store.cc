@@ -1,5 +1,6 @@
 #include "tiles/tile_store.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -8,6 +9,10 @@
 #include <memory>
 #include <random>
 #include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 #include "io/interruption.h"
 #include "io/point_cloud_io.h"
@@ -51,6 +56,44 @@ Record Unpack(const char* in) {
   r.kept = static_cast<uint8_t>(in[50]);
   return r;
 }
+
+// A file of `size` bytes created at `path` and mapped into memory for reading and writing;
+// removed when the object goes.
+class MappedFile {
+ public:
+  MappedFile(const std::string& path, size_t size) : path_(path), size_(size) {
+    descriptor_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_TRUNC, 0600);
+    if (descriptor_ < 0 || ::ftruncate(descriptor_, static_cast<off_t>(size)) != 0) {
+      Release();
+      throw std::runtime_error("cannot create " + path + ": " + std::strerror(errno));
+    }
+    if (size_ > 0) {
+      void* mapped = ::mmap(nullptr, size_, PROT_READ | PROT_WRITE, MAP_SHARED, descriptor_, 0);
+      if (mapped == MAP_FAILED) {
+        Release();
+        throw std::runtime_error("cannot map " + path + ": " + std::strerror(errno));
+      }
+      data_ = static_cast<char*>(mapped);
+    }
+  }
+  ~MappedFile() { Release(); }
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  char* data() { return data_; }
+
+ private:
+  void Release() {
+    if (data_) ::munmap(data_, size_);
+    if (descriptor_ >= 0) ::close(descriptor_);
+    ::unlink(path_.c_str());
+    data_ = nullptr;
+    descriptor_ = -1;
+  }
+  std::string path_;
+  size_t size_;
+  int descriptor_ = -1;
+  char* data_ = nullptr;
+};
 
 std::string TilePath(const std::string& directory, int tile) {
   return directory + "/tile_" + std::to_string(tile) + ".bin";
@@ -208,10 +251,40 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
                       const std::string& output, bool overwrite) const {
   size_t kept = 0;
   for (const TileSummary& tile : tiles) kept += tile.kept;
-  std::vector<std::unique_ptr<std::ifstream>> results;
+  // The tiles' records gathered by input index into one memory-mapped file, one tile file
+  // open at a time: the merge then holds three files open however many tiles there are
+  // (opening them all at once failed past the limit of open files, 1024 by default).
+  size_t count = 0;
   for (int t = 0; t < tree.num_tiles; ++t) {
-    results.push_back(std::make_unique<std::ifstream>(TilePath(directory_, t), std::ios::binary));
-    if (!*results.back()) throw std::runtime_error("missing " + TilePath(directory_, t));
+    std::error_code error;
+    const uintmax_t bytes = std::filesystem::file_size(TilePath(directory_, t), error);
+    if (error || bytes % kRecordBytes != 0) {
+      throw std::runtime_error("missing or damaged " + TilePath(directory_, t));
+    }
+    count += bytes / kRecordBytes;
+  }
+  const std::string gathered_path = directory_ + "/results.bin";
+  slots_.push_back(io::RegisterTemporaryFile(gathered_path));
+  MappedFile gathered(gathered_path, count * kRecordBytes);
+  std::vector<uint8_t> filled(count, 0);
+  std::vector<char> bytes(kRecordBytes * kChunkPoints);
+  for (int t = 0; t < tree.num_tiles; ++t) {
+    std::ifstream in(TilePath(directory_, t), std::ios::binary);
+    if (!in) throw std::runtime_error("missing " + TilePath(directory_, t));
+    while (in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())) || in.gcount() > 0) {
+      const size_t records = static_cast<size_t>(in.gcount()) / kRecordBytes;
+      for (size_t r = 0; r < records; ++r) {
+        const char* record = bytes.data() + r * kRecordBytes;
+        uint32_t index;
+        std::memcpy(&index, record, sizeof(index));
+        if (index >= count || filled[index]++) {
+          throw std::runtime_error(TilePath(directory_, t) + " holds a point twice or out of range");
+        }
+        std::memcpy(gathered.data() + static_cast<size_t>(index) * kRecordBytes, record,
+                    kRecordBytes);
+      }
+      io::ThrowIfInterrupted();
+    }
   }
   io::PointWriter writer(output, overwrite, kept, /*with_normals=*/true,
                          {{"outlier", "float"},
@@ -221,15 +294,13 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
                           {"seam", "float"},
                           {"source_index", "uint"},
                           {"tile", "uint"}});
-  char bytes[kRecordBytes];
   Scan([&](uint32_t index, const energy::Point3& p) {
-    const int t = tree.Locate(p);
-    if (!results[t]->read(bytes, kRecordBytes)) {
-      throw std::runtime_error(TilePath(directory_, t) + " ends early");
+    if (index >= count || !filled[index]) {
+      throw std::runtime_error("no tile holds the result of point " + std::to_string(index));
     }
-    const Record r = Unpack(bytes);
-    if (r.index != index) throw std::runtime_error(TilePath(directory_, t) + " is out of order");
+    const Record r = Unpack(gathered.data() + static_cast<size_t>(index) * kRecordBytes);
     if (!r.kept) return;
+    const int t = tree.Locate(p);
     bool seam = false;
     for (const TileSummary& other : tiles) {
       if (other.tile != t && solvers::InHalo(other.box, other.halo_width, p)) {

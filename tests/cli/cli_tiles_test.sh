@@ -59,6 +59,18 @@ code=$?
 [ ! -e "$dir/out_interrupted.xyz" ] || fail "interrupted tiled run: left an output"
 echo "interrupted: exit $code: $(tail -1 "$dir/stderr")"
 
+# 2,000 points in tiles of 100 under a limit of 10 open files: the merge holds a few files
+# open however many tiles there are (it opened every tile file at once), and writes the
+# same bytes as without the limit.
+cases=$((cases + 1))
+head -2000 "$dir/cloud.xyz" >"$dir/small.xyz"
+"$lpd" denoise "$dir/small.xyz" -o "$dir/few_files.ply" --tile_points=100 --quiet --threads=1 \
+  >/dev/null 2>"$dir/unlimited.err" || fail "tiles of 100 points: $(tail -1 "$dir/unlimited.err")"
+(ulimit -n 10 && "$lpd" denoise "$dir/small.xyz" -o "$dir/limited.ply" --tile_points=100 \
+   --quiet --threads=1 >/dev/null 2>"$dir/limited.err") ||
+  fail "ulimit -n 10: $(tail -1 "$dir/limited.err")"
+cmp -s "$dir/few_files.ply" "$dir/limited.ply" || fail "ulimit -n 10 changed the tiled output"
+
 if command -v mpirun >/dev/null; then
   # Under --sanitize, Open MPI's runtime leaks at exit from plugins it has unloaded, which
   # LeakSanitizer cannot name or suppress; the one-process cases above check lpd's own code.
