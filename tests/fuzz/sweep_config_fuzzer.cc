@@ -5,6 +5,7 @@
 
 #include "bytes_file.h"
 #include "experiments/sweep/sweep_config.h"
+#include "experiments/sweep/sweep_runner.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const BytesFile file(data, size, ".yaml");
