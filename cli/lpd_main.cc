@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <gflags/gflags.h>
 
 #include "cli/commands.h"
@@ -106,9 +108,21 @@ void PrintCommandHelp(const Command& command) {
   if (has_parameters) lpd::cli::PrintParameterHelp();
 }
 
+// OpenMP threads that wait for work spin by default (GNU libgomp), which makes lpd much
+// slower beside other work: FANDISK 0.01 with 2 threads next to one busy core, and two lpd
+// runs at once (docs/performance.md, "Shared machines"). libgomp reads OMP_WAIT_POLICY once,
+// when it is loaded, so a run that did not set it sets it to PASSIVE and starts itself
+// again; the results do not change.
+void RestartWithPassiveOpenMpThreads(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr) return;
+  ::setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
+  ::execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  RestartWithPassiveOpenMpThreads(argv);
   gflags::SetUsageMessage("lpd COMMAND [ARGS] [--flags]; run `lpd` for the list of commands");
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
       !std::strcmp(argv[1], "help")) {

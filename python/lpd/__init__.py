@@ -16,11 +16,16 @@ colours of the kept points. Options are the flags of `lpd denoise --help`; lpd.p
 lists them with their defaults. Bad input or options raise ValueError; Ctrl-C stops the
 solve at the next iteration with KeyboardInterrupt.
 """
+import os
 from typing import NamedTuple
 
 import numpy as np
 
-from . import _lpd
+# Waiting OpenMP threads sleep instead of spinning, so that lpd degrades gracefully beside
+# other work (docs/performance.md); GNU libgomp reads this once, when it is first loaded.
+os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+
+from . import _lpd  # noqa: E402
 
 __version__ = _lpd.__version__
 __all__ = ["denoise", "parameters", "Result", "__version__"]
