@@ -1,6 +1,7 @@
 #include "experiments/sweep/sweep_config.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
@@ -226,7 +227,11 @@ NoiseOptions ToNoiseOptions(const ParameterSet& noise, const std::string& config
       } else if (key == "sigma") {
         options.sigma = number;
       } else if (key == "outliers") {
-        if (number != static_cast<int>(number)) throw std::invalid_argument("outliers must be an integer");
+        // Checked as a double first: casting 1e78 to int is undefined (found by the fuzzer).
+        if (!(number >= 0.0 && number <= 1e9) || number != std::floor(number)) {
+          throw std::invalid_argument("noise outliers must be an integer in [0, 1e9], got '" +
+                                      value.text + "'");
+        }
         options.outlier_count = static_cast<int>(number);
       } else if (key == "outlier_ratio") {
         options.outlier_ratio = number;
