@@ -108,21 +108,26 @@ void PrintCommandHelp(const Command& command) {
   if (has_parameters) lpd::cli::PrintParameterHelp();
 }
 
-// OpenMP threads that wait for work spin by default (GNU libgomp), which makes lpd much
-// slower beside other work: FANDISK 0.01 with 2 threads next to one busy core, and two lpd
-// runs at once (docs/performance.md, "Shared machines"). libgomp reads OMP_WAIT_POLICY once,
-// when it is loaded, so a run that did not set it sets it to PASSIVE and starts itself
-// again; the results do not change.
-void RestartWithPassiveOpenMpThreads(char** argv) {
-  if (std::getenv("OMP_WAIT_POLICY") != nullptr) return;
-  ::setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
+// Waiting OpenMP threads (GNU libgomp) spin for about 300,000 rounds before they sleep,
+// which makes lpd several times slower beside other work: FANDISK 0.01 with 2 threads took
+// 5.1 s next to one busy core against 3.2 s with 1 thread, and two runs at once 6.1 s
+// (docs/performance.md, "Shared machines"). A spin of 1,000 rounds keeps 2 threads within
+// 1.1x of 1 thread there and within 5% of spinning on an idle machine; sleeping at once
+// (OMP_WAIT_POLICY=PASSIVE) costs 18% when idle. libgomp reads GOMP_SPINCOUNT once, when it
+// is loaded, so a run that set neither setting sets it and starts itself again; the results
+// do not change.
+void RestartWithShortOpenMpSpins(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) {
+    return;
+  }
+  ::setenv("GOMP_SPINCOUNT", "1000", 1);
   ::execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  RestartWithPassiveOpenMpThreads(argv);
+  RestartWithShortOpenMpSpins(argv);
   gflags::SetUsageMessage("lpd COMMAND [ARGS] [--flags]; run `lpd` for the list of commands");
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
       !std::strcmp(argv[1], "help")) {

@@ -21,9 +21,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-# Waiting OpenMP threads sleep instead of spinning, so that lpd degrades gracefully beside
+# Waiting OpenMP threads spin briefly, then sleep, so that lpd degrades gracefully beside
 # other work (docs/performance.md); GNU libgomp reads this once, when it is first loaded.
-os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+if "OMP_WAIT_POLICY" not in os.environ:
+    os.environ.setdefault("GOMP_SPINCOUNT", "1000")
 
 from . import _lpd  # noqa: E402
 
