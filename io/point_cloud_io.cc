@@ -757,10 +757,10 @@ PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
                          bool with_normals,
                          std::vector<std::pair<std::string, std::string>> fields,
                          const std::vector<std::string>& comments, const std::string& format)
-    : ply_(OutputFormat(path, format) == "ply"),
-      count_(count),
-      with_normals_(with_normals) {
-  if (OutputFormat(path, format) == "las") {
+    : count_(count), with_normals_(with_normals) {
+  const std::string chosen = OutputFormat(path, format);
+  ply_ = chosen == "ply";
+  if (chosen == "las") {
     throw std::runtime_error("cannot write '" + path + "' point by point: LAS is written "
                              "whole (WritePointCloud); write PLY or XYZ here");
   }
