@@ -1,5 +1,7 @@
-// lpd metrics OUTPUT --ground_truth=SOURCE [--input=NOISY.ply]: error metrics of a denoised
-// point set, and outlier / feature detection scores when the noisy input carries labels.
+// lpd metrics OUTPUT --ground_truth=SOURCE [--input=NOISY.ply] [--clean=CLEAN.ply]: error
+// metrics of a denoised point set, the learned denoisers' benchmark figures (P2M, and CD
+// against the clean samples), and outlier / feature detection scores when the noisy input
+// carries labels.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "cli/denoise_flags.h"
+#include "experiments/evaluation/benchmark_metrics.h"
 #include "experiments/evaluation/ground_truth_source.h"
 #include "experiments/evaluation/metrics.h"
 #include "io/point_cloud_io.h"
@@ -22,6 +25,9 @@ DEFINE_string(input, "",
               "the noisy input written by `lpd noise` (.ply with is_outlier and "
               "feature_distance): scores the outlier and feature flags of OUTPUT, matched "
               "through OUTPUT's source_index");
+DEFINE_string(clean, "",
+              "the clean samples the noisy input was made from (the learned denoisers' "
+              "benchmark): prints their Chamfer distance CD to OUTPUT");
 DEFINE_double(feature_band, 0.01,
               "a clean point within this fraction of the bounding-box diagonal of a sharp "
               "edge counts as a feature point");
@@ -112,6 +118,16 @@ int RunMetricsCommand(const std::vector<std::string>& arguments) {
       std::printf("%-26s %14.6e %14.6e\n", name.c_str(), value, columns[c + 1].second);
       ++c;
     }
+  }
+  const double p2m = experiments::PointToMeshDistanceX1e4(output.points, truth, FLAGS_threads);
+  if (std::isfinite(p2m)) {
+    std::printf("%-26s %14.4f   (unit-sphere frame of the ground truth)\n", "p2m x 1e4", p2m);
+  }
+  if (!FLAGS_clean.empty()) {
+    const double cd = experiments::ChamferDistanceX1e4(
+        output.points, io::ReadPoints(FLAGS_clean), FLAGS_threads);
+    std::printf("%-26s %14.4f   (unit-sphere frame of %s)\n", "cd x 1e4", cd,
+                FLAGS_clean.c_str());
   }
   if (!FLAGS_input.empty()) ScoreAgainstInput(output, arguments[0], truth);
   return 0;

@@ -1,4 +1,4 @@
-// lpd noise [INPUT] -o NOISY.ply: a labelled noisy point set from a procedural shape, a mesh
+// lpd noise [INPUT] -o NOISY.ply [--clean_output=CLEAN.ply]: a labelled noisy point set from a procedural shape, a mesh
 // or a clean point file, for experiments and for `lpd metrics --input`.
 #include <cmath>
 #include <cstdio>
@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "io/point_cloud_io.h"
 #include "experiments/shapes/noise.h"
+#include "experiments/shapes/poisson_disk_sampling.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "experiments/shapes/triangle_mesh.h"
 
@@ -27,8 +28,14 @@ DEFINE_string(noise_model, "gaussian",
               "gaussian (isotropic), normal (along the clean normal only) or varying "
               "(isotropic, 0.5 to 1.5 sigma along the longest axis)");
 DEFINE_string(noise_scale, "bbox_diagonal",
-              "length that sigma is a fraction of: bbox_diagonal or fps_diameter (the paper's "
-              "farthest-point-sampling diameter)");
+              "length that sigma is a fraction of: bbox_diagonal, fps_diameter (the paper's "
+              "farthest-point-sampling diameter) or unit_sphere_radius (the learned "
+              "denoisers' benchmark)");
+DEFINE_string(sampling, "uniform",
+              "how --shape or --mesh is sampled: uniform (area-uniform random) or "
+              "poisson_disk (the learned denoisers' benchmark)");
+DEFINE_string(clean_output, "",
+              "also write the clean samples here (for `lpd metrics --clean`)");
 DEFINE_int32(outlier_count, 0, "number of uniform outliers added in the enlarged bounding box");
 DEFINE_double(outlier_ratio, 0.0, "more outliers, as a fraction of the clean point count");
 DEFINE_double(outlier_margin, 0.05,
@@ -46,6 +53,19 @@ int RunNoiseCommand(const std::vector<std::string>& arguments) {
     throw std::invalid_argument("OUTPUT must differ from INPUT (refusing to overwrite input)");
   }
   if (FLAGS_points < 1) throw std::invalid_argument("points must be >= 1");
+  if (FLAGS_sampling != "uniform" && FLAGS_sampling != "poisson_disk") {
+    throw std::invalid_argument("unknown --sampling '" + FLAGS_sampling +
+                                "' (expected uniform or poisson_disk)");
+  }
+  const bool poisson_disk = FLAGS_sampling == "poisson_disk";
+  if (poisson_disk && !arguments.empty()) {
+    throw std::invalid_argument("--sampling is for --shape or --mesh, not a point file");
+  }
+  if (!FLAGS_clean_output.empty() &&
+      (FLAGS_clean_output == FLAGS_output ||
+       (!arguments.empty() && FLAGS_clean_output == arguments[0]))) {
+    throw std::invalid_argument("--clean_output must differ from INPUT and OUTPUT");
+  }
   experiments::NoiseOptions options;
   options.model = experiments::ParseNoiseModel(FLAGS_noise_model);
   options.scale = experiments::ParseNoiseScale(FLAGS_noise_scale);
@@ -62,10 +82,13 @@ int RunNoiseCommand(const std::vector<std::string>& arguments) {
   std::unique_ptr<experiments::ProceduralShape> shape;
   if (!FLAGS_shape.empty()) {
     shape = std::make_unique<experiments::ProceduralShape>(experiments::MakeShape(experiments::ParseShapeSpec(FLAGS_shape)));
-    clean = shape->Sample(FLAGS_points, FLAGS_seed);
+    clean = poisson_disk ? experiments::PoissonDiskSample(*shape, FLAGS_points, FLAGS_seed)
+                         : shape->Sample(FLAGS_points, FLAGS_seed);
     source = "shape " + shape->description();
   } else if (!FLAGS_mesh.empty()) {
-    clean = experiments::SampleTriangleMesh(experiments::ReadTriangleMesh(FLAGS_mesh), FLAGS_points, FLAGS_seed);
+    const experiments::TriangleMesh mesh = experiments::ReadTriangleMesh(FLAGS_mesh);
+    clean = poisson_disk ? experiments::PoissonDiskSample(mesh, FLAGS_points, FLAGS_seed)
+                         : experiments::SampleTriangleMesh(mesh, FLAGS_points, FLAGS_seed);
     source = "mesh " + FLAGS_mesh;
   } else {
     io::PointCloud input = io::ReadPointCloud(arguments[0]);
@@ -92,14 +115,21 @@ int RunNoiseCommand(const std::vector<std::string>& arguments) {
     cloud.attributes.push_back({"feature_distance", "float", distance});
   }
   std::ostringstream description;
-  description << "source " << source << ", " << num_clean << " clean points, seed "
-              << FLAGS_seed;
+  description << "source " << source << ", " << num_clean << " clean points ("
+              << FLAGS_sampling << "), seed " << FLAGS_seed;
   cloud.comments.push_back(description.str());
   description.str("");
   description << "noise " << ToString(options.model) << " sigma " << options.sigma << " of "
               << ToString(options.scale) << " " << noisy.scale_length << " = "
               << noisy.sigma_absolute << ", outliers " << noisy.points.size() - num_clean;
   cloud.comments.push_back(description.str());
+  if (!FLAGS_clean_output.empty()) {
+    io::PointCloud clean_cloud;
+    clean_cloud.points = clean.points;
+    clean_cloud.normals = clean.normals;
+    clean_cloud.comments.push_back(cloud.comments.front());
+    io::WritePointCloud(FLAGS_clean_output, clean_cloud, FLAGS_overwrite);
+  }
   io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
   for (const std::string& line : cloud.comments) std::printf("%s\n", line.c_str());
   std::printf("wrote %s (%zu points)\n", FLAGS_output.c_str(), cloud.points.size());

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "energy/normalization.h"
+#include "experiments/evaluation/benchmark_metrics.h"
 
 namespace lpd::experiments {
 
@@ -20,6 +21,11 @@ GroundTruth ShapeGroundTruth(std::shared_ptr<const ProceduralShape> shape, int n
 #pragma omp parallel for schedule(static) num_threads(num_threads)
     for (long i = 0; i < n; ++i) distances[i] = shape->DistanceToSurface(points[i]);
     return distances;
+  };
+  truth.frame_points = truth.samples;
+  truth.surface_to_points_distances = [samples = truth.samples](const energy::PointList& points,
+                                                                int num_threads) {
+    return NearestDistances(samples, points, num_threads);
   };
   if (shape->has_features()) {
     truth.feature_distance = [shape](const energy::Point3& p) {

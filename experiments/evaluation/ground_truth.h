@@ -27,6 +27,13 @@ struct GroundTruth {
       surface_distances;
   // Distance from a point to the nearest sharp feature (empty when not known).
   std::function<double(const energy::Point3&)> feature_distance;
+  // The other way: from each element of the clean surface (a mesh's triangles, a procedural
+  // shape's dense samples) to the nearest of `points` (empty when not known).
+  std::function<std::vector<double>(const energy::PointList&, int num_threads)>
+      surface_to_points_distances;
+  // The points that fix the unit-sphere frame of the benchmark figures: a mesh's vertices,
+  // a procedural shape's dense samples (benchmark_metrics.h).
+  energy::PointList frame_points;
 };
 
 // Dense samples of the clean surface: enough that their spacing (about 2e-3 of the diagonal

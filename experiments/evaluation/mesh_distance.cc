@@ -1,5 +1,6 @@
 #include "experiments/evaluation/mesh_distance.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,6 +10,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include "energy/normalization.h"
+#include "energy/point_kd_tree.h"
 
 namespace lpd::experiments {
 namespace {
@@ -52,6 +54,48 @@ std::vector<double> MeshDistance::Distances(const energy::PointList& points,
 #pragma omp parallel for schedule(dynamic, 256) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
     distances[i] = std::sqrt(tree_->tree.squared_distance(ToCgal(points[i])));
+  }
+  return distances;
+}
+
+std::vector<double> MeshDistance::TriangleDistances(const energy::PointList& points,
+                                                    int num_threads) const {
+  if (points.empty()) throw std::invalid_argument("no points to measure the mesh against");
+  const energy::PointListAdaptor adaptor{points};
+  energy::L2PointKdTree tree(3, adaptor,
+                             nanoflann::KDTreeSingleIndexAdaptorParams(energy::kKdTreeLeafSize));
+  tree.buildIndex();
+  const int m = num_triangles();
+  std::vector<double> distances(m);
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<std::pair<int, double>> found;
+#pragma omp for schedule(dynamic, 256)
+    for (int t = 0; t < m; ++t) {
+      const Triangle& triangle = tree_->triangles[t];
+      const energy::Point3 centroid(
+          (triangle[0].x() + triangle[1].x() + triangle[2].x()) / 3.0,
+          (triangle[0].y() + triangle[1].y() + triangle[2].y()) / 3.0,
+          (triangle[0].z() + triangle[1].z() + triangle[2].z()) / 3.0);
+      double reach = 0.0;  // the farthest the triangle gets from its centroid
+      for (int v = 0; v < 3; ++v) {
+        reach = std::max(reach, std::sqrt(CGAL::squared_distance(triangle[v], ToCgal(centroid))));
+      }
+      // The point nearest the centroid bounds the answer; any nearer point to the triangle
+      // lies within that bound plus `reach` of the centroid.
+      int nearest;
+      double squared;
+      nanoflann::KNNResultSet<double, int> result(1);
+      result.init(&nearest, &squared);
+      tree.findNeighbors(result, centroid.data(), nanoflann::SearchParams());
+      double best = CGAL::squared_distance(ToCgal(points[nearest]), triangle);
+      const double radius = std::sqrt(best) + reach;
+      tree.radiusSearch(centroid.data(), radius * radius, found, nanoflann::SearchParams());
+      for (const auto& [index, unused] : found) {
+        best = std::min(best, CGAL::squared_distance(ToCgal(points[index]), triangle));
+      }
+      distances[t] = std::sqrt(best);
+    }
   }
   return distances;
 }

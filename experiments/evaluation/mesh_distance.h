@@ -22,6 +22,10 @@ class MeshDistance {
   // Unsigned distance from each point to the nearest triangle, computed in parallel.
   std::vector<double> Distances(const energy::PointList& points, int num_threads) const;
 
+  // Distance from each triangle (in mesh order) to the nearest of `points`, in parallel.
+  // Throws std::invalid_argument if `points` is empty.
+  std::vector<double> TriangleDistances(const energy::PointList& points, int num_threads) const;
+
   // Bounding-box diagonal of the mesh vertices.
   double BoundingBoxDiagonal() const { return diagonal_; }
   int num_triangles() const;

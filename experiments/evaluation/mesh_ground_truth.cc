@@ -20,6 +20,11 @@ GroundTruth MeshGroundTruth(const TriangleMesh& mesh, const std::string& name, i
   truth.surface_distances = [distance](const energy::PointList& points, int num_threads) {
     return distance->Distances(points, num_threads);
   };
+  truth.surface_to_points_distances = [distance](const energy::PointList& points,
+                                                 int num_threads) {
+    return distance->TriangleDistances(points, num_threads);
+  };
+  truth.frame_points = mesh.vertices;
   return truth;
 }
 

@@ -1,5 +1,6 @@
 #include "experiments/shapes/noise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -36,7 +37,12 @@ std::string ToString(NoiseModel model) {
 }
 
 std::string ToString(NoiseScale scale) {
-  return scale == NoiseScale::kBoundingBoxDiagonal ? "bbox_diagonal" : "fps_diameter";
+  switch (scale) {
+    case NoiseScale::kBoundingBoxDiagonal: return "bbox_diagonal";
+    case NoiseScale::kFpsDiameter: return "fps_diameter";
+    case NoiseScale::kUnitSphereRadius: return "unit_sphere_radius";
+  }
+  return "?";
 }
 
 NoiseModel ParseNoiseModel(const std::string& name) {
@@ -48,11 +54,12 @@ NoiseModel ParseNoiseModel(const std::string& name) {
 }
 
 NoiseScale ParseNoiseScale(const std::string& name) {
-  for (NoiseScale scale : {NoiseScale::kBoundingBoxDiagonal, NoiseScale::kFpsDiameter}) {
+  for (NoiseScale scale : {NoiseScale::kBoundingBoxDiagonal, NoiseScale::kFpsDiameter,
+                           NoiseScale::kUnitSphereRadius}) {
     if (name == ToString(scale)) return scale;
   }
   throw std::invalid_argument("unknown noise scale '" + name +
-                              "' (expected bbox_diagonal or fps_diameter)");
+                              "' (expected bbox_diagonal, fps_diameter or unit_sphere_radius)");
 }
 
 double FpsDiameter(const PointList& points) {
@@ -76,9 +83,29 @@ double FpsDiameter(const PointList& points) {
   return diameter;
 }
 
+UnitSphere UnitSphereOf(const PointList& points) {
+  if (points.empty()) throw std::invalid_argument("no points to normalize");
+  energy::Point3 low = points.front(), high = points.front();
+  for (const energy::Point3& p : points) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  UnitSphere sphere;
+  sphere.centre = 0.5 * (low + high);
+  for (const energy::Point3& p : points) {
+    sphere.radius = std::max(sphere.radius, (p - sphere.centre).norm());
+  }
+  if (!(sphere.radius > 0.0)) throw std::invalid_argument("the points have no extent");
+  return sphere;
+}
+
 double ScaleLength(const PointList& points, NoiseScale scale) {
-  return scale == NoiseScale::kBoundingBoxDiagonal ? energy::BoundingBoxDiagonal(points)
-                                                   : FpsDiameter(points);
+  switch (scale) {
+    case NoiseScale::kBoundingBoxDiagonal: return energy::BoundingBoxDiagonal(points);
+    case NoiseScale::kFpsDiameter: return FpsDiameter(points);
+    case NoiseScale::kUnitSphereRadius: return UnitSphereOf(points).radius;
+  }
+  return 0.0;
 }
 
 NoisyPointSet ApplyNoise(const PointList& clean, const PointList& normals,

@@ -1,8 +1,9 @@
 // lpd: seeded noise and outlier models for synthetic inputs.
 //
 // The noise level is a fraction of a length scale of the clean model: its bounding-box
-// diagonal, or its diameter as estimated by farthest-point sampling (the paper's Fig. 13 and
-// Fig. 17 convention, after [ZCN*19]). Every noisy set records which scale it used, the
+// diagonal, its diameter as estimated by farthest-point sampling (the paper's Fig. 13 and
+// Fig. 17 convention, after [ZCN*19]), or the radius of its unit sphere (the learned
+// denoisers' benchmark, benchmark_metrics.h). Every noisy set records which scale it used, the
 // absolute sigma, and which of its points are outliers.
 #ifndef LPD_EXPERIMENTS_SHAPES_NOISE_H_
 #define LPD_EXPERIMENTS_SHAPES_NOISE_H_
@@ -22,7 +23,7 @@ enum class NoiseModel {
               // the longest bounding-box axis (mean sigma for evenly spread points)
 };
 
-enum class NoiseScale { kBoundingBoxDiagonal, kFpsDiameter };
+enum class NoiseScale { kBoundingBoxDiagonal, kFpsDiameter, kUnitSphereRadius };
 
 struct NoiseOptions {
   NoiseModel model = NoiseModel::kGaussian;
@@ -46,7 +47,7 @@ struct NoisyPointSet {
 };
 
 // Names used in configs, CSV files and flags: "gaussian", "normal", "varying";
-// "bbox_diagonal", "fps_diameter". The parsers throw std::invalid_argument on unknown names.
+// "bbox_diagonal", "fps_diameter", "unit_sphere_radius". The parsers throw std::invalid_argument on unknown names.
 std::string ToString(NoiseModel model);
 std::string ToString(NoiseScale scale);
 NoiseModel ParseNoiseModel(const std::string& name);
@@ -56,6 +57,15 @@ NoiseScale ParseNoiseScale(const std::string& name);
 // to the farthest from that one, until the distance stops growing. A lower bound of the true
 // diameter, and at least half of it; exact for most convex shapes after two jumps.
 double FpsDiameter(const energy::PointList& points);
+
+// The sphere the learned denoisers' benchmark normalizes by: centre (max + min) / 2 of the
+// points, radius the largest distance of a point from it. Throws std::invalid_argument if
+// `points` is empty or all one point.
+struct UnitSphere {
+  energy::Point3 centre = energy::Point3::Zero();
+  double radius = 0.0;
+};
+UnitSphere UnitSphereOf(const energy::PointList& points);
 
 double ScaleLength(const energy::PointList& points, NoiseScale scale);
 

@@ -76,6 +76,7 @@ const std::map<std::string, std::map<std::string, double>>& ShapeParameterDefaul
       {"cylinder", {{"radius", 0.5}, {"height", 1.0}}},
       {"cone", {{"apex_angle", 60.0}, {"radius", 0.5}}},
       {"cad_part", {{"sweep", 270.0}}},
+      {"sheets", {{"size", 1.0}, {"gap", 0.02}}},
   };
   return defaults;
 }
@@ -196,6 +197,17 @@ ProceduralShape MakeShape(const ShapeSpec& spec) {
     const double r = p("radius");
     const double height = r / std::tan(0.5 * angle * M_PI / 180.0);
     return MakeSolidOfRevolution(description, {{0, 0}, {r, 0}, {0, height}}, 360.0);
+  }
+  if (spec.name == "sheets") {
+    const double h = 0.5 * p("size"), z = 0.5 * p("gap");
+    std::vector<std::unique_ptr<SurfacePatch>> sheets;
+    for (double side : {-1.0, 1.0}) {
+      sheets.push_back(std::make_unique<ConvexPolygon>(
+          std::vector<Point3>{{-h, -h, side * z}, {h, -h, side * z}, {h, h, side * z},
+                              {-h, h, side * z}},
+          Point3(0.0, 0.0, side)));
+    }
+    return ProceduralShape(description, std::move(sheets), {}, {});
   }
   // cad_part: a base cylinder, a 45-degree chamfer, a waist cylinder, a flat shoulder (concave
   // edge at its inner rim), a neck cylinder and a conical tip cut flat.

@@ -8,6 +8,8 @@
 //   cad_part  sweep=270                           a FANDISK-like turned part: planar,
 //             cylindrical and conical patches, convex and concave straight and circular
 //             edges; a lathe profile revolved over `sweep` degrees and closed by planar cuts
+//   sheets    size=1 gap=0.02                     two parallel open squares `gap` apart (a
+//             thin part without its rim); a plate is box:size_x=1,size_y=1,size_z=THICKNESS
 #ifndef LPD_EXPERIMENTS_SHAPES_SHAPE_CATALOG_H_
 #define LPD_EXPERIMENTS_SHAPES_SHAPE_CATALOG_H_
 

@@ -132,7 +132,7 @@ void RequireFile(const std::string& path, int line, const std::string& file) {
 }
 
 DatasetConfig LoadDataset(const std::string& path, const YAML::Node& node) {
-  CheckKeys(path, node, "a dataset", {"shape", "mesh", "file", "ground_truth", "points", "name"});
+  CheckKeys(path, node, "a dataset", {"shape", "mesh", "file", "ground_truth", "points", "sampling", "name"});
   DatasetConfig dataset;
   dataset.line = Line(node);
   int sources = 0;
@@ -168,6 +168,15 @@ DatasetConfig LoadDataset(const std::string& path, const YAML::Node& node) {
   if (node["points"]) {
     if (!dataset.file.empty()) Fail(path, Line(node["points"]), "'points' is for shape or mesh");
     dataset.points = static_cast<int>(Integer(path, node["points"], "points", 1, 1000000000));
+  }
+  if (node["sampling"]) {
+    if (!dataset.file.empty()) Fail(path, Line(node["sampling"]), "'sampling' is for shape or mesh");
+    const std::string sampling = Scalar(path, node["sampling"], "sampling");
+    if (sampling != "uniform" && sampling != "poisson_disk") {
+      Fail(path, Line(node["sampling"]),
+           "unknown sampling '" + sampling + "' (expected uniform or poisson_disk)");
+    }
+    dataset.poisson_disk = sampling == "poisson_disk";
   }
   if (node["name"]) {
     dataset.name = Scalar(path, node["name"], "name");

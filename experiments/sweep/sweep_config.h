@@ -31,6 +31,8 @@ struct DatasetConfig {
   std::string file;          // or a noisy point file, used as given
   std::string ground_truth;  // for `file`: optional ground-truth source (ground_truth_source.h)
   int points = 25000;        // samples drawn from `shape` or `mesh`
+  // Poisson-disk samples (poisson_disk_sampling.h) instead of area-uniform random ones.
+  bool poisson_disk = false;
   int line = 0;
 };
 

@@ -12,12 +12,14 @@
 #include <thread>
 
 #include "experiments/baselines/surface_reconstruction.h"
+#include "experiments/evaluation/benchmark_metrics.h"
 #include "experiments/evaluation/ground_truth_source.h"
 #include "experiments/evaluation/metrics.h"
 #include "io/atomic_output_file.h"
 #include "io/interruption.h"
 #include "io/machine_info.h"
 #include "io/point_cloud_io.h"
+#include "experiments/shapes/poisson_disk_sampling.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "experiments/shapes/triangle_mesh.h"
 #include "experiments/sweep/sweep_methods.h"
@@ -86,9 +88,14 @@ CellInput MakeInput(const SweepConfig& config, const SweepCell& cell,
     return input;
   }
   const uint64_t sample_seed = config.seed + cell.repetition;
-  const SurfaceSamples clean = loaded.shape ? loaded.shape->Sample(dataset.points, sample_seed)
-                                            : SampleTriangleMesh(*loaded.mesh, dataset.points,
-                                                                 sample_seed);
+  SurfaceSamples clean;
+  if (dataset.poisson_disk) {
+    clean = loaded.shape ? PoissonDiskSample(*loaded.shape, dataset.points, sample_seed)
+                         : PoissonDiskSample(*loaded.mesh, dataset.points, sample_seed);
+  } else {
+    clean = loaded.shape ? loaded.shape->Sample(dataset.points, sample_seed)
+                         : SampleTriangleMesh(*loaded.mesh, dataset.points, sample_seed);
+  }
   input.noise = ToNoiseOptions(config.noise[cell.noise], config.path);
   input.noise.seed = config.seed + 1000003ull * (cell.repetition + 1);
   NoisyPointSet noisy = ApplyNoise(clean.points, clean.normals, input.noise);
@@ -219,6 +226,10 @@ ResultRecord RunCell(const SweepConfig& config, const SweepCell& cell,
     record.Add("ground_truth", truth->description);
     metrics = ComputeMetrics(run.output, *truth, num_threads);
     for (const auto& [name, value] : metrics.Columns()) record.Add(name, value);
+    record.Add("p2m_x1e4", PointToMeshDistanceX1e4(run.output, *truth, num_threads));
+  }
+  if (!input.clean.empty()) {
+    record.Add("cd_x1e4", ChamferDistanceX1e4(run.output, input.clean, num_threads));
   }
   if (!input.is_outlier.empty() && !run.outlier_flags.empty() && num_outliers > 0) {
     AddDetection("outlier", ScoreDetection(run.outlier_flags, input.is_outlier), &record);
@@ -299,6 +310,7 @@ std::vector<SweepCell> ExpandCells(const SweepConfig& config) {
           cell.repetition = r;
           cell.key = "dataset=" + dataset.name + "|source=" + dataset.shape + dataset.mesh +
                      dataset.file + "|points=" + std::to_string(generated ? dataset.points : 0) +
+                     (dataset.poisson_disk ? "|sampling=poisson_disk" : "") +
                      "|ground_truth=" + dataset.ground_truth +
                      "|noise=" + (generated ? Describe(config.noise[n]) : "as given") +
                      "|method=" + config.methods[m].method + ":" +
@@ -326,7 +338,7 @@ const std::vector<std::string>& ResultColumns() {
     for (const char* name :
          {"num_output", "mse", "mse_normalized", "mcd", "mcd_normalized", "snr_db",
           "mean_distance", "mean_distance_normalized", "rms_distance_normalized",
-          "max_distance_normalized", "outlier_precision", "outlier_recall",
+          "max_distance_normalized", "cd_x1e4", "p2m_x1e4", "outlier_precision", "outlier_recall",
           "outlier_bound_precision", "outlier_bound_recall", "feature_precision",
           "feature_recall", "iterations", "final_energy", "seconds", "setup_seconds",
           "local_seconds_per_iteration", "global_seconds_per_iteration", "threads",
