@@ -3,12 +3,31 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
 
 #include "energy/nearest_neighbors.h"
+#include "energy/sheet_split.h"
 
 namespace lpd::energy {
 
-NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads) {
+namespace {
+
+// p_i followed by the points found near it (nearest first). With duplicate points i need not
+// come first in `nearest`, and it may be missing when more duplicates of p_i exist than are
+// searched, in which case the farthest one is dropped.
+void Members(int i, const int* nearest, int found, int wanted, std::vector<int>* out) {
+  out->assign(1, i);
+  for (int a = 0; a < found && static_cast<int>(out->size()) < wanted; ++a) {
+    if (nearest[a] != i) out->push_back(nearest[a]);
+  }
+}
+
+}  // namespace
+
+NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
+                                 bool split_sheets) {
   if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
   const int n = static_cast<int>(points.size());
   if (n < k + 1) {
@@ -20,17 +39,47 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   graph.k = k;
   graph.neighbors.resize(static_cast<size_t>(n) * k);
   const NearestNeighbors search(points);
+  const int searched =
+      split_sheets ? std::min(n, std::max(2 * k + 1, kSheetSplitPoints)) : k + 1;
+  std::vector<float> separation(split_sheets ? n : 0);
   search.ForEach(
-      n, k + 1, num_threads, [&points](int i) { return points[i]; },
-      [&graph, k](int i, const int* nearest, const double*, int) {
-        // Drop i itself; with duplicate points it need not come first, and it may be missing
-        // when more than k duplicates of p_i exist, in which case the farthest one is dropped.
-        int* out = graph.neighbors.data() + static_cast<size_t>(i) * k;
-        int count = 0;
-        for (int a = 0; a <= k && count < k; ++a) {
-          if (nearest[a] != i) out[count++] = nearest[a];
+      n, searched, num_threads, [&points](int i) { return points[i]; },
+      [&](int i, const int* nearest, const double*, int found) {
+        thread_local std::vector<int> members;
+        Members(i, nearest, found, searched, &members);
+        std::copy_n(members.begin() + 1, k, graph.neighbors.data() + static_cast<size_t>(i) * k);
+        if (split_sheets) {
+          separation[i] = static_cast<float>(
+              SplitSheets(points, members.data(), static_cast<int>(members.size())).separation);
         }
       });
+  if (split_sheets) {
+    // Where the region around p_i is a thin part (sheet_split.h), N(i) is the k nearest
+    // candidates on p_i's own side.
+    std::vector<int> thin;
+    for (int i = 0; i < n; ++i) {
+      double sum = separation[i];
+      for (int a = 0; a < k; ++a) sum += separation[graph.NeighborsOf(i)[a]];
+      if (sum / (k + 1) > kThinRegionSeparation) thin.push_back(i);
+    }
+    search.ForEach(
+        static_cast<int>(thin.size()), searched, num_threads,
+        [&](int row) { return points[thin[row]]; },
+        [&](int row, const int* nearest, const double*, int found) {
+          const int i = thin[row];
+          thread_local std::vector<int> members;
+          Members(i, nearest, found, searched, &members);
+          const SheetSplit split =
+              SplitSheets(points, members.data(), static_cast<int>(members.size()));
+          if (!(split.separation > 0.0)) return;  // not two parallel sides here
+          const int side = split.Side(split.Offset(points[i]));
+          std::stable_partition(members.begin() + 1, members.end(), [&](int j) {
+            return split.Side(split.Offset(points[j])) == side;
+          });
+          std::copy_n(members.begin() + 1, k,
+                      graph.neighbors.data() + static_cast<size_t>(i) * k);
+        });
+  }
   BuildPairs(&graph);
   return graph;
 }

@@ -37,8 +37,11 @@ struct NeighborGraph {
 };
 
 // Builds N and M for `points` with a k-d tree (nanoflann), using `num_threads` threads.
-// Requires points.size() >= k + 1 and k >= 1; throws std::invalid_argument otherwise.
-NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads);
+// With `split_sheets`, N(i) is the k nearest of the 2k nearest on p_i's own side where they
+// lie on two sheets of a thin part (sheet_split.h), so that a fit does not average the two
+// sides. Requires points.size() >= k + 1 and k >= 1; throws std::invalid_argument otherwise.
+NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
+                                 bool split_sheets = false);
 
 // Builds M and the incidence lists from already filled `graph.k` and `graph.neighbors`.
 void BuildPairs(NeighborGraph* graph);

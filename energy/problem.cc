@@ -79,7 +79,8 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   problem.frame = ComputeNormalizingFrame(input_points);
   problem.points.reserve(input_points.size());
   for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
-  problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads);
+  problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,
+                                     options.split_sheets);
   ComputeWeights(options.min_squared_distance_ratio, &problem);
   return problem;
 }

@@ -23,6 +23,8 @@ struct ProblemOptions {
   // Floor of |p_i - p_j|^2 and alpha_i, as a fraction of mean_i alpha_i (duplicate guard):
   // pairs closer than 1% of the RMS neighbour distance count as that far apart.
   double min_squared_distance_ratio = 1e-4;
+  // N(i) from p_i's own side of a thin part (BuildNeighborGraph; paper: false).
+  bool split_sheets = true;
   bool IsValid(std::string* error) const;
 };
 

@@ -182,6 +182,12 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
              [](O& o) -> double& { return o.neighborhood.radius_in_sigmas; }),
       Integer("max_k", kBoth, {kNeighbours, "with k auto, the largest k chosen"},
               [](O& o) -> int& { return o.neighborhood.max_k; }),
+      Flag("split_sheets", kBoth,
+           {kNeighbours,
+            "where a part is thinner than the neighbourhood (a wall, a plate, a petal), take "
+            "N(i) from p_i's own side and measure the noise on each side apart",
+            "", "false"},
+           [](O& o) -> bool& { return o.problem.split_sheets; }),
       Number("max_problem_size", kBoth,
              {kNeighbours,
               "with k auto, the largest problem solved, in neighbour entries n x k (1e7: about "

@@ -94,6 +94,12 @@ Initialization DenoiseOptions::EffectiveInitialization() const {
   return solver == Solver::kCeres ? Initialization::kPlaneFit : Initialization::kZero;
 }
 
+NeighborhoodSizeOptions DenoiseOptions::ProbeOptions() const {
+  NeighborhoodSizeOptions probe = neighborhood;
+  probe.split_sheets = problem.split_sheets;
+  return probe;
+}
+
 bool DenoiseOptions::IsValid(std::string* error) const {
   if (choose_k && !neighborhood.IsValid(error)) return false;
   if (!choose_k && !problem.IsValid(error)) return false;
@@ -128,7 +134,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
   energy::ProblemOptions problem_options = options.problem;
   energy::PointList solved_points = ordered_points;
   if (options.choose_k) {
-    Thinning thinning = ChooseThinning(ordered_points, options.neighborhood, threads);
+    Thinning thinning = ChooseThinning(ordered_points, options.ProbeOptions(), threads);
     state.neighborhood = thinning.size;
     problem_options.k = state.neighborhood.k;
     if (!thinning.rows.empty()) SplitOffUnsolved(thinning.rows, ordered_points, &state,

@@ -61,6 +61,8 @@ struct DenoiseOptions {
   bool mark_outliers = false;
 
   Initialization EffectiveInitialization() const;
+  // `neighborhood` with the probe told whether sheets are split (problem.split_sheets).
+  NeighborhoodSizeOptions ProbeOptions() const;
 
   bool IsValid(std::string* error) const;
 };

@@ -12,6 +12,7 @@
 
 #include "energy/normalization.h"
 #include "energy/nearest_neighbors.h"
+#include "energy/sheet_split.h"
 #include "solvers/median.h"
 
 namespace lpd::solvers {
@@ -40,7 +41,6 @@ namespace {
 
 // At most this many probe neighbourhoods: their medians are then stable to about 0.5%.
 constexpr int kMaxProbeQueries = 1 << 17;
-
 }  // namespace
 
 NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
@@ -58,13 +58,19 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   const energy::NearestNeighbors search(normalized);
   const int k = std::min(options.probe_k, n - 1);
   const int queries = std::min(n, kMaxProbeQueries);
-  std::vector<double> residuals(static_cast<size_t>(queries) * (k + 1));
+  // Signed distances of each probe neighbourhood's points from its plane.
+  std::vector<double> offsets(static_cast<size_t>(queries) * (k + 1));
+  std::vector<int> members(offsets.size());
   std::vector<double> alpha(queries);
+  // The split of each probe's wider neighbourhood into the two sides of a thin part.
+  std::vector<energy::SheetSplit> splits(options.split_sheets ? queries : 0);
+  const int searched =
+      options.split_sheets ? std::min(n, std::max(k + 1, energy::kSheetSplitPoints)) : k + 1;
   // Query q probes input point i(q), spread evenly over the (Morton-ordered) points.
   auto point_of = [n, queries](int query) {
     return static_cast<int>(static_cast<int64_t>(query) * n / queries);
   };
-  auto probe = [&](int query, const int* nearest, const double*, int) {
+  auto probe = [&](int query, const int* nearest, const double*, int found) {
     const int i = point_of(query);
     // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -80,15 +86,55 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
     const Eigen::Vector3d normal = eigen.eigenvectors().col(0);
     for (int a = 0; a <= k; ++a) {
-      residuals[static_cast<size_t>(query) * (k + 1) + a] =
-          std::abs(normal.dot(normalized[nearest[a]] - mean));
+      offsets[static_cast<size_t>(query) * (k + 1) + a] =
+          normal.dot(normalized[nearest[a]] - mean);
+      members[static_cast<size_t>(query) * (k + 1) + a] = nearest[a];
     }
     alpha[query] = squared_sum / k;
+    if (options.split_sheets) splits[query] = energy::SplitSheets(normalized, nearest, found);
   };
   search.ForEach(
-      queries, k + 1, num_threads, [&](int query) { return normalized[point_of(query)]; },
+      queries, searched, num_threads, [&](int query) { return normalized[point_of(query)]; },
       probe);
   NeighborhoodSize size;
+  // Where a part is thinner than the neighbourhood, its two sides are measured each from its
+  // own side's mean (energy/sheet_split.h): a probe counts as split when the mean separation
+  // over it and the probed points among its probe_k nearest passes kThinRegionSeparation.
+  std::vector<int> query_of(options.split_sheets ? n : 0, -1);
+  for (int query = 0; query < queries && options.split_sheets; ++query) {
+    query_of[point_of(query)] = query;
+  }
+  std::vector<double> residuals(offsets.size());
+  int thin = 0;
+#pragma omp parallel for schedule(static) num_threads(num_threads) reduction(+ : thin)
+  for (int query = 0; query < queries; ++query) {
+    const size_t row = static_cast<size_t>(query) * (k + 1);
+    double separation = 0.0;
+    int count = 0;
+    for (int a = 0; a <= k && options.split_sheets; ++a) {
+      const int other = query_of[members[row + a]];
+      if (other < 0) continue;
+      separation += splits[other].separation;
+      ++count;
+    }
+    const bool two_sheets = count > 0 && separation > energy::kThinRegionSeparation * count;
+    thin += two_sheets;
+    // Each side's offsets from the probe plane, measured from that side's mean.
+    double side_sum[2] = {0.0, 0.0};
+    int side_count[2] = {0, 0};
+    std::vector<int> side(k + 1, 0);
+    for (int a = 0; a <= k && two_sheets; ++a) {
+      const energy::SheetSplit& split = splits[query];
+      side[a] = split.Side(split.Offset(normalized[members[row + a]]));
+      side_sum[side[a]] += offsets[row + a];
+      ++side_count[side[a]];
+    }
+    for (int a = 0; a <= k; ++a) {
+      const double centre = two_sheets ? side_sum[side[a]] / side_count[side[a]] : 0.0;
+      residuals[row + a] = std::abs(offsets[row + a] - centre);
+    }
+  }
+  size.two_sheet_fraction = static_cast<double>(thin) / queries;
   // 1.4826 median |residual|: sigma for Gaussian residuals (residual_statistics.h), with
   // the three degrees of freedom the fitted plane absorbs given back.
   size.noise_sigma = 1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0));

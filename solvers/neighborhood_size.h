@@ -31,6 +31,8 @@ struct NeighborhoodSizeOptions {
   double radius_in_sigmas = 4.15;
   int min_k = 12;
   int max_k = 150;
+  // Measure each side of a thin part from its own plane (energy/sheet_split.h; paper: no).
+  bool split_sheets = true;
   // The largest problem solved, in neighbour entries n k; past it a subsample is solved
   // (thinning.h). 1e7 is about 0.6 GB and 20 s on 2 cores.
   double max_problem_size = 1e7;
@@ -43,6 +45,7 @@ struct NeighborhoodSize {
   double noise_sigma = 0.0;  // in the normalized frame (bounding-box diagonal 1)
   double spacing = 0.0;      // likewise
   int k = 0;
+  double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
 };
 
 // Throws std::invalid_argument (as energy::BuildProblem) when most points coincide with their

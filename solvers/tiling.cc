@@ -132,9 +132,9 @@ double HaloWidth(const energy::PointList& own_points, const DenoiseOptions& opti
   const int threads = options.settings.num_threads;
   NeighborhoodSize size;
   if (options.choose_k) {
-    size = ChooseThinning(own_points, options.neighborhood, threads).size;
+    size = ChooseThinning(own_points, options.ProbeOptions(), threads).size;
   } else {
-    size = ChooseNeighborhoodSize(own_points, options.neighborhood, threads);
+    size = ChooseNeighborhoodSize(own_points, options.ProbeOptions(), threads);
     size.k = options.problem.k;
   }
   const double diagonal = energy::BoundingBoxDiagonal(own_points);

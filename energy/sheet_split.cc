@@ -1,0 +1,96 @@
+#include "energy/sheet_split.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+namespace lpd::energy {
+namespace {
+
+// The unit normal of the least-squares plane through the points with `side` (or all points
+// for side < 0), and whether there were 3 or more of them.
+bool PlaneNormal(const PointList& points, const int* members, int count,
+                 const std::vector<int>& sides, int side, Eigen::Vector3d* normal,
+                 Eigen::Vector3d* mean) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int used = 0;
+  for (int a = 0; a < count; ++a) {
+    if (side >= 0 && sides[a] != side) continue;
+    sum += points[members[a]];
+    ++used;
+  }
+  if (used < 3) return false;
+  *mean = sum / used;
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < count; ++a) {
+    if (side >= 0 && sides[a] != side) continue;
+    const Eigen::Vector3d d = points[members[a]] - *mean;
+    scatter += d * d.transpose();
+  }
+  *normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+  return true;
+}
+
+}  // namespace
+
+SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
+  SheetSplit split;
+  const std::vector<int> none;
+  if (count < 2 * kMinSheetPoints ||
+      !PlaneNormal(points, members, count, none, -1, &split.normal, &split.mean)) {
+    return split;
+  }
+  std::vector<double> offsets(count);
+  for (int a = 0; a < count; ++a) offsets[a] = split.Offset(points[members[a]]);
+  std::vector<double> sorted = offsets;
+  std::sort(sorted.begin(), sorted.end());
+  double sum = 0.0, squares = 0.0;
+  for (double o : sorted) {
+    sum += o;
+    squares += o * o;
+  }
+  // Prefix sums over the lower run, which holds kMinSheetPoints or more.
+  double best = squares - sum * sum / count, lower_sum = 0.0, lower_squares = 0.0;
+  for (int a = 0; a < kMinSheetPoints - 1; ++a) {
+    lower_sum += sorted[a];
+    lower_squares += sorted[a] * sorted[a];
+  }
+  int best_size = 0;
+  for (int m = kMinSheetPoints; m <= count - kMinSheetPoints; ++m) {
+    lower_sum += sorted[m - 1];
+    lower_squares += sorted[m - 1] * sorted[m - 1];
+    const double upper_sum = sum - lower_sum, upper_squares = squares - lower_squares;
+    const double within = lower_squares - lower_sum * lower_sum / m + upper_squares -
+                          upper_sum * upper_sum / (count - m);
+    if (within < best) {
+      best = within;
+      best_size = m;
+    }
+  }
+  if (best_size == 0 || !(best > 0.0)) return split;
+  split.threshold = 0.5 * (sorted[best_size - 1] + sorted[best_size]);
+  double lower = 0.0;
+  for (int a = 0; a < best_size; ++a) lower += sorted[a];
+  split.lower_mean = lower / best_size;
+  split.upper_mean = (sum - lower) / (count - best_size);
+  const double within_deviation = std::sqrt(best / (count - 2));
+  // Two sides of a thin part are parallel; the two faces of a sharp edge are not. (A run of
+  // few points has no reliable normal: the other side's cap near a thin part's rim.)
+  if (std::min(best_size, count - best_size) >= kMinPointsForNormal) {
+    std::vector<int> sides(count);
+    for (int a = 0; a < count; ++a) sides[a] = split.Side(offsets[a]);
+    Eigen::Vector3d lower_normal, upper_normal, unused;
+    PlaneNormal(points, members, count, sides, 0, &lower_normal, &unused);
+    PlaneNormal(points, members, count, sides, 1, &upper_normal, &unused);
+    if (std::abs(lower_normal.dot(upper_normal)) <
+        std::cos(kMaxSheetAngleDegrees * M_PI / 180.0)) {
+      return split;
+    }
+  }
+  split.separation = (split.upper_mean - split.lower_mean) / within_deviation;
+  return split;
+}
+
+}  // namespace lpd::energy
