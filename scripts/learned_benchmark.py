@@ -181,6 +181,7 @@ def main():
     parser.add_argument("--results", default="results/learned_benchmark")
     parser.add_argument("--threads", type=int, default=0, help="0: all cores")
     parser.add_argument("--table-only", action="store_true", help="only print the tables")
+    parser.add_argument("--lpd", default=str(ROOT / "build" / "lpd"), help="the lpd binary")
     args = parser.parse_args()
     results = pathlib.Path(args.results)
     if not args.table_only:
@@ -188,8 +189,7 @@ def main():
         results.mkdir(parents=True, exist_ok=True)
         config = results / "learned_benchmark.yaml"
         write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin)
-        lpd = ROOT / "build" / "lpd"
-        command = [str(lpd), "sweep", str(config), f"--results_dir={results}"]
+        command = [args.lpd, "sweep", str(config), f"--results_dir={results}"]
         if args.threads:
             command.append(f"--threads={args.threads}")
         subprocess.run(command, check=True)

@@ -160,8 +160,9 @@ TEST(DefaultPreset, ASecondPassWithoutTheOutliersGivesTheOutlierFreeResult) {
   const double first = MeanDistance(with_outliers.shape, one_pass);
   const double second = MeanDistance(with_outliers.shape, two_passes);
   const double isolated_removed = MeanDistance(with_outliers.shape, isolation_too);
-  // Measured: two passes 1.46x the outlier-free distance, and 1.06x with the isolated points
-  // removed too (6,000 points; at 25,000 points 1.10x and 1.01x, docs/method.md). The
+  // Measured: two passes 1.31x the outlier-free distance, and 1.05x with the isolated points
+  // removed too (6,000 points; 1.46x and 1.06x before sheets were split; at 25,000 points
+  // 1.10x and 1.01x, docs/method.md). The
   // isolation test only removes points: the others keep their results.
   EXPECT_LT(second, 0.75 * first);
   EXPECT_LT(second, 1.5 * outlier_free) << "one pass: " << first / outlier_free << "x";
@@ -172,7 +173,7 @@ TEST(DefaultPreset, ASecondPassWithoutTheOutliersGivesTheOutlierFreeResult) {
     EXPECT_TRUE(two_passes.kept[i]) << "point " << i;
     EXPECT_EQ(isolation_too.projected[i], two_passes.projected[i]) << "point " << i;
   }
-  EXPECT_LT(isolated_removed, 0.8 * second)
+  EXPECT_LT(isolated_removed, 0.85 * second)
       << "two passes " << second / outlier_free << "x, isolation too "
       << isolated_removed / outlier_free << "x the outlier-free distance";
 }
