@@ -119,21 +119,42 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     }
     const bool two_sheets = count > 0 && separation > energy::kThinRegionSeparation * count;
     thin += two_sheets;
-    // Each side's offsets from the probe plane, measured from that side's mean.
-    double side_sum[2] = {0.0, 0.0};
-    int side_count[2] = {0, 0};
-    std::vector<int> side(k + 1, 0);
-    for (int a = 0; a <= k && two_sheets; ++a) {
-      const energy::SheetSplit& split = splits[query];
-      side[a] = split.Side(split.Offset(normalized[members[row + a]]));
-      side_sum[side[a]] += offsets[row + a];
-      ++side_count[side[a]];
+    if (!two_sheets) {
+      for (int a = 0; a <= k; ++a) residuals[row + a] = std::abs(offsets[row + a]);
+      continue;
     }
+    // Split, the probe's own side (by the wider neighbourhood's split) gets a plane of its
+    // own, which the other side's points neither move nor tilt; the other side's points are
+    // left out (NaN).
+    const energy::SheetSplit& split = splits[query];
+    const int own_side = split.Side(split.Offset(normalized[members[row]]));
+    std::vector<int> own;
     for (int a = 0; a <= k; ++a) {
-      const double centre = two_sheets ? side_sum[side[a]] / side_count[side[a]] : 0.0;
-      residuals[row + a] = std::abs(offsets[row + a] - centre);
+      residuals[row + a] = NAN;
+      if (split.Side(split.Offset(normalized[members[row + a]])) == own_side) own.push_back(a);
+    }
+    const int m = static_cast<int>(own.size());
+    if (m < 4) continue;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int a : own) mean += normalized[members[row + a]];
+    mean /= m;
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (int a : own) {
+      const Eigen::Vector3d d = normalized[members[row + a]] - mean;
+      scatter += d * d.transpose();
+    }
+    const Eigen::Vector3d normal =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+    // The plane of m points absorbs three degrees of freedom, the probe's k + 1 as many:
+    // scaled so that the correction below, made for k + 1, fits.
+    const double dof = std::sqrt((m / (m - 3.0)) / ((k + 1.0) / (k - 2.0)));
+    for (int a : own) {
+      residuals[row + a] = dof * std::abs(normal.dot(normalized[members[row + a]] - mean));
     }
   }
+  residuals.erase(std::remove_if(residuals.begin(), residuals.end(),
+                                 [](double r) { return std::isnan(r); }),
+                  residuals.end());
   size.two_sheet_fraction = static_cast<double>(thin) / queries;
   // 1.4826 median |residual|: sigma for Gaussian residuals (residual_statistics.h), with
   // the three degrees of freedom the fitted plane absorbs given back.

@@ -1,0 +1,101 @@
+// The two sides of a thin part: the split test on sheets, one sheet and a sharp edge, and the
+// neighbourhoods built with it on a thin plate, against the sides the points were drawn on.
+#include "energy/sheet_split.h"
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "energy/neighbor_graph.h"
+
+namespace lpd::energy {
+namespace {
+
+// `count` points on the square [0, extent]^2 at height 0 or `gap` (side 1 drawn with
+// probability `far_share`), Gaussian noise `sigma` along z; sides[i] says which side point i
+// came from.
+PointList Sheets(int count, double gap, double sigma, double far_share, uint64_t seed,
+                 std::vector<int>* sides = nullptr, double extent = 0.2) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, sigma);
+  PointList points;
+  for (int i = 0; i < count; ++i) {
+    const int side = uniform(random) < far_share ? 1 : 0;
+    points.emplace_back(extent * uniform(random), extent * uniform(random),
+                        side * gap + noise(random));
+    if (sides) sides->push_back(side);
+  }
+  return points;
+}
+
+std::vector<int> All(int count) {
+  std::vector<int> members(count);
+  std::iota(members.begin(), members.end(), 0);
+  return members;
+}
+
+double Separation(const PointList& points) {
+  const std::vector<int> members = All(static_cast<int>(points.size()));
+  return SplitSheets(points, members.data(), static_cast<int>(members.size())).separation;
+}
+
+TEST(SheetSplit, TwoSheetsSixDeviationsApartAreSplitAtTheGap) {
+  const double sigma = 0.01;
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    std::vector<int> sides;
+    const PointList points = Sheets(128, 6 * sigma, sigma, 0.3, seed, &sides);
+    const std::vector<int> members = All(128);
+    const SheetSplit split = SplitSheets(points, members.data(), 128);
+    EXPECT_GT(split.separation, kThinRegionSeparation) << "seed " << seed;
+    // The runs are the sides (up to the sign of the normal), bar the points that noise and
+    // the fitted normal's tilt carry across the middle (seen: up to 5 of 128).
+    int agree = 0;
+    for (int i = 0; i < 128; ++i) agree += split.Side(split.Offset(points[i])) == sides[i];
+    EXPECT_GE(std::max(agree, 128 - agree), 121) << "seed " << seed;
+    EXPECT_NEAR(std::abs(split.upper_mean - split.lower_mean), 6 * sigma, 1.5 * sigma);
+  }
+}
+
+TEST(SheetSplit, OneSheetStaysUnderTheRegionThresholdOnAverage) {
+  double sum = 0.0;
+  for (uint64_t seed = 1; seed <= 200; ++seed) sum += Separation(Sheets(128, 0.0, 0.01, 0.0, seed));
+  // One Gaussian sheet's split separates its runs by about 2.7 within-run deviations.
+  EXPECT_LT(sum / 200, 3.0);
+  EXPECT_GT(sum / 200, 2.4);
+}
+
+TEST(SheetSplit, TooFewPointsAreNeverSplit) {
+  EXPECT_EQ(Separation(Sheets(2 * kMinSheetPoints - 1, 1.0, 0.01, 0.5, 3)), 0.0);
+}
+
+TEST(SheetSplit, NeighbourhoodsOfAThinPlateStayOnTheirSide) {
+  // Two sheets 6 noise deviations apart, closer than the neighbourhood's radius: about a third
+  // of each point's 20 nearest lie on the other side; split, almost none.
+  const double sigma = 0.004;
+  std::vector<int> sides;
+  const PointList points = Sheets(8000, 6 * sigma, sigma, 0.5, 9, &sides, 1.0);
+  auto crossing = [&](const NeighborGraph& graph) {
+    long count = 0;
+    for (int i = 0; i < graph.num_points(); ++i) {
+      for (int a = 0; a < graph.k; ++a) count += sides[graph.NeighborsOf(i)[a]] != sides[i];
+    }
+    return static_cast<double>(count) / (static_cast<double>(graph.num_points()) * graph.k);
+  };
+  const double plain = crossing(BuildNeighborGraph(points, 20, 2, false));
+  const double split = crossing(BuildNeighborGraph(points, 20, 2, true));
+  EXPECT_GT(plain, 0.2);
+  EXPECT_LT(split, 0.01);
+}
+
+TEST(SheetSplit, NeighbourhoodsOfOneSheetAreTheNearestPoints) {
+  const PointList points = Sheets(4000, 0.0, 0.004, 0.0, 5, nullptr, 1.0);
+  EXPECT_EQ(BuildNeighborGraph(points, 16, 2, true).neighbors,
+            BuildNeighborGraph(points, 16, 2, false).neighbors);
+}
+
+}  // namespace
+}  // namespace lpd::energy
