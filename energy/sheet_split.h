@@ -16,8 +16,8 @@
 // 31-53% of neighbourhoods of 25-35 points); a thin part is a region, so a neighbourhood is
 // split where the mean separation over its points' own neighbourhoods passes
 // kThinRegionSeparation. That mean has medians 2.75-2.93 and 99th percentiles 3.0-3.4 on
-// one sheet (sphere, beetle, lilium, FANDISK and JOINT samples), 3.9-5.1 on plates and
-// sheets 4-8 noise deviations apart (docs/method.md).
+// one sheet (sphere, beetle, lilium, FANDISK and JOINT samples; the top on sharp edges),
+// 3.9-5.1 on plates and sheets 4-8 noise deviations apart (docs/method.md).
 #ifndef LPD_ENERGY_SHEET_SPLIT_H_
 #define LPD_ENERGY_SHEET_SPLIT_H_
 
@@ -34,7 +34,7 @@ constexpr int kMinSheetPoints = 4;
 constexpr int kSheetSplitPoints = 128;
 constexpr double kMaxSheetAngleDegrees = 25.0;
 constexpr int kMinPointsForNormal = 24;  // in each run, for the angle test
-constexpr double kThinRegionSeparation = 3.5;
+constexpr double kThinRegionSeparation = 3.3;
 
 struct SheetSplit {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // of the least-squares plane
