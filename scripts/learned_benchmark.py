@@ -129,18 +129,24 @@ def print_tables(results):
     print("## Means over shapes (CD / P2M x 1e4)\n")
     print("| method | " + " | ".join(columns) + " |")
     print("|---" * (len(columns) + 1) + "|")
-    for method in ["none", "lpd", "bilateral"]:
-        row = []
-        for size, sigma in levels:
-            label = best_bilateral.get((size, sigma)) if method == "bilateral" else method
-            figures = [cells[(s, size, sigma)].get(label) for s in shapes
-                       if (s, size, sigma) in cells]
-            figures = [f for f in figures if f]
-            row.append(f"{mean([f[0] for f in figures]):.2f} / {mean([f[1] for f in figures]):.2f}"
-                       if figures else "")
-        name = {"none": "noisy input", "lpd": "lpd (defaults)",
-                "bilateral": "CGAL bilateral, best setting per column"}[method]
-        print(f"| {name} | " + " | ".join(row) + " |")
+    thin = {name for name, _ in THIN_SHAPES}
+    groups = [("", shapes), (", meshes", [s for s in shapes if s not in thin]),
+              (", thin parts", [s for s in shapes if s in thin])]
+    for group, members in groups:
+        if not members or (group and len(members) == len(shapes)):
+            continue
+        for method in ["none", "lpd", "bilateral"]:
+            row = []
+            for size, sigma in levels:
+                label = best_bilateral.get((size, sigma)) if method == "bilateral" else method
+                figures = [cells[(s, size, sigma)].get(label) for s in members
+                           if (s, size, sigma) in cells]
+                figures = [f for f in figures if f]
+                row.append(f"{mean([f[0] for f in figures]):.2f} / "
+                           f"{mean([f[1] for f in figures]):.2f}" if figures else "")
+            name = {"none": "noisy input", "lpd": "lpd (defaults)",
+                    "bilateral": "CGAL bilateral, best setting per column"}[method]
+            print(f"| {name}{group} ({len(members)}) | " + " | ".join(row) + " |")
     if best_bilateral:
         print("\nBilateral settings: " + "; ".join(
             f"{size} {sigma * 100:g}%: {label.split(' ', 1)[1]}"
