@@ -399,6 +399,13 @@ std::vector<Parameter> FinalStepParameters() {
               "N(i) u {i} give q_i) at which i is an outlier",
               "", "0.9"},
              [](O& o) -> double& { return o.final_step.outlier_fraction; }),
+      Number("local_noise_ratio", kBoth,
+             {kOutliers,
+              "each plane scores points against its region's noise: its line process widens "
+              "by the ratio of the region's residual scale to the median over all regions, "
+              "clamped to [1, this] (1: the global mu_l only)",
+              "", "1"},
+             [](O& o) -> double& { return o.final_step.local_noise_ratio; }),
       Number("feature_threshold", kBoth, {kFinal, "m_ij below this counts as a feature vote"},
              [](O& o) -> double& { return o.final_step.feature_line_threshold; }),
       Number("feature_fraction", kBoth,

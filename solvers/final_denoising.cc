@@ -1,5 +1,6 @@
 #include "solvers/final_denoising.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -27,6 +28,8 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
   std::ostringstream out;
   if (!InUnitInterval(outlier_fraction)) {
     out << "outlier_fraction must be in (0, 1], got " << outlier_fraction;
+  } else if (!(local_noise_ratio >= 1.0 && local_noise_ratio <= 100.0)) {
+    out << "local_noise_ratio must be in [1, 100], got " << local_noise_ratio;
   } else if (blended_surfaces < 1) {
     out << "blended_surfaces must be at least 1, got " << blended_surfaces;
   } else if (!InUnitInterval(feature_line_threshold)) {
@@ -46,25 +49,93 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
   return false;
 }
 
-std::vector<double> PlaneSupport(const energy::Variables& v) {
-  std::vector<double> support(v.l.rows());
-  for (size_t j = 0; j < support.size(); ++j) support[j] = v.l.row(j).mean();
-  return support;
+namespace {
+
+double PlaneResidual(const energy::Variables& v, int j, const energy::Point3& p) {
+  return v.h.row(j).head<3>().dot(p.transpose()) + v.h(j, 3);
+}
+
+// A plane's line process is widened only where its region's residual scale is at least
+// kMinRegionNoiseRatio times the median region's (below, a region's scale is one noise level
+// seen through a median of a few residuals: widening there only keeps the noisiest inliers
+// of uniform noise) and its neighbourhood's radius at most kMaxRadiusRatio times the median
+// radius (scattered outliers fit planes through each other with a large residual scale, but
+// their neighbourhoods are wider). Measurements: docs/method.md, "Outliers".
+constexpr double kMinRegionNoiseRatio = 1.5;
+constexpr double kMaxRadiusRatio = 2.0;
+
+// The median of `values` (reordered); 0 when empty.
+double MedianOf(std::vector<double>* values) {
+  if (values->empty()) return 0.0;
+  const auto middle = values->begin() + values->size() / 2;
+  std::nth_element(values->begin(), middle, values->end());
+  return *middle;
+}
+
+}  // namespace
+
+PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy::Variables& v,
+                                   double mu_l, const FinalDenoisingOptions& options) {
+  const int n = problem.num_points();
+  const int columns = problem.k() + 1;
+  const auto& graph = problem.graph;
+  PlaneEvidence evidence;
+  evidence.mu.assign(n, mu_l);
+  evidence.support.resize(n);
+  for (int j = 0; j < n; ++j) evidence.support[j] = v.l.row(j).mean();
+  if (options.local_noise_ratio <= 1.0) return evidence;
+  // s_j: the robust residual scale of h_j over its own neighbourhood; sigma_j: the median
+  // of s over N(j) u {j}, steadier than one median of k + 1 residuals.
+  // radius_j: the distance from q_j to its farthest fitting point.
+  std::vector<double> scale(n), region_scale(n), radius(n), values(columns);
+  for (int j = 0; j < n; ++j) {
+    radius[j] = 0.0;
+    for (int a = 0; a < columns; ++a) {
+      const energy::Point3& q = problem.points[graph.FittingPoint(j, a)];
+      values[a] = std::abs(PlaneResidual(v, j, q));
+      radius[j] = std::max(radius[j], (q - problem.points[j]).norm());
+    }
+    scale[j] = 1.4826 * MedianOf(&values);
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int a = 0; a < columns; ++a) values[a] = scale[graph.FittingPoint(j, a)];
+    region_scale[j] = MedianOf(&values);
+  }
+  std::vector<double> all = region_scale;
+  const double typical = MedianOf(&all);
+  all = radius;
+  const double typical_radius = MedianOf(&all);
+  for (int j = 0; j < n; ++j) {
+    const bool surface_density = radius[j] <= kMaxRadiusRatio * typical_radius;
+    const double ratio = typical > 0.0 ? region_scale[j] / typical : 0.0;
+    const double widening = surface_density && ratio >= kMinRegionNoiseRatio
+                                ? std::min(ratio, options.local_noise_ratio)
+                                : 1.0;
+    if (widening == 1.0) continue;
+    evidence.mu[j] = mu_l * widening * widening;
+    const energy::GemanMcClure penalty(evidence.mu[j]);
+    double explained = 0.0;
+    for (int a = 0; a < columns; ++a) {
+      const double r = PlaneResidual(v, j, problem.points[graph.FittingPoint(j, a)]);
+      explained += penalty.OptimalLineProcess(r * r);
+    }
+    evidence.support[j] = explained / columns;
+  }
+  return evidence;
 }
 
 double OutlierScore(const energy::Point3& p, const int* planes, int count,
-                    const energy::Variables& v, const std::vector<double>& support,
-                    double mu_l) {
+                    const energy::Variables& v, const PlaneEvidence& evidence) {
   // Evidence that p lies on the surface: the line process each plane h_j gives it (Eq. 6),
   // weighted by that plane's support.
-  const energy::GemanMcClure penalty(mu_l);
-  double evidence = 0.0;
+  double explained = 0.0;
   for (int a = 0; a < count; ++a) {
     const int j = planes[a];
-    const double residual = v.h.row(j).head<3>().dot(p.transpose()) + v.h(j, 3);
-    evidence += support[j] * penalty.OptimalLineProcess(residual * residual);
+    const double residual = PlaneResidual(v, j, p);
+    explained += evidence.support[j] *
+                 energy::GemanMcClure(evidence.mu[j]).OptimalLineProcess(residual * residual);
   }
-  return 1.0 - evidence / count;
+  return 1.0 - explained / count;
 }
 
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
@@ -77,12 +148,12 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
   indicators.feature_score.resize(n);
   indicators.is_outlier.resize(n);
   indicators.is_feature.resize(n);
-  const std::vector<double> support = PlaneSupport(v);
+  const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options);
   std::vector<int> fitting_points(k + 1);
   for (int i = 0; i < n; ++i) {
     for (int a = 0; a <= k; ++a) fitting_points[a] = graph.FittingPoint(i, a);
     indicators.outlier_score[i] =
-        OutlierScore(problem.points[i], fitting_points.data(), k + 1, v, support, mu_l);
+        OutlierScore(problem.points[i], fitting_points.data(), k + 1, v, evidence);
     indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
 
     const int begin = graph.incident_offsets[i];

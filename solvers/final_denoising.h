@@ -13,6 +13,14 @@
 //                        is ours: on cad_part with 20% uniform outliers, recall 0.23 with the
 //                        plain 90% vote over l_ji, 0.91 at precision 0.99 this way
 //                        (docs/method.md).
+//                        Each plane reads residuals against its region's noise (ours too): with
+//                        s_j the robust residual scale of h_j's own neighbourhood and sigma_j
+//                        the median of s_j' over j' in N(j) u {j}, h_j's l and support use
+//                        mu_l (sigma_j / median_j sigma_j)^2, the ratio capped at
+//                        local_noise_ratio, where it is at least 1.5 and h_j's neighbourhood
+//                        is about as dense as the surface's: a scan's noisier bands and
+//                        overlapping layers are kept, a point off the surface is still far
+//                        from every plane.
 //   feature score of i = fraction of pairs (i, j) in M with m_ij < feature_line_threshold;
 //                        i is near a feature if the score > feature_fraction (paper: 70%, 0.5;
 //                        default 30%: with data-scaled weights the planes on either side of
@@ -48,6 +56,9 @@ struct FinalDenoisingOptions {
   // 6.58 / 6.51 / 6.42 / 6.38 / 6.34 / 6.36e-3.
   int blended_surfaces = 30;
   double outlier_fraction = 0.65;        // outlier score that makes an outlier, in (0, 1]
+  // Largest factor by which a plane's region noise may widen its line process (above; 1:
+  // the global mu_l only, as in the paper).
+  double local_noise_ratio = 3.0;
   double feature_line_threshold = 0.5;   // m_ij below this votes "feature"
   double feature_fraction = 0.3;         // share of votes above which i is a feature point
   bool remove_outliers = true;           // drop outliers from the output
@@ -76,15 +87,20 @@ struct PointIndicators {
   std::vector<uint8_t> is_feature;
 };
 
-// The support of every plane h_j: the mean of its line processes l_ja, the share of its
-// own neighbourhood it explains.
-std::vector<double> PlaneSupport(const energy::Variables& v);
+// What each plane h_j brings to the outlier scores (above): the selectivity mu_j of the line
+// process it gives a point, and its support, the mean line process over its own
+// neighbourhood at mu_j (where h_j is not widened: mu_l and the optimizer's l_ja).
+struct PlaneEvidence {
+  std::vector<double> mu;
+  std::vector<double> support;
+};
+PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy::Variables& v,
+                                   double mu_l, const FinalDenoisingOptions& options);
 
 // The outlier score of the point p (normalized frame) asked of the planes h_j of `planes`
-// (above; `count` of them, with `support` from PlaneSupport and l at selectivity mu_l).
+// (above; `count` of them).
 double OutlierScore(const energy::Point3& p, const int* planes, int count,
-                    const energy::Variables& v, const std::vector<double>& support,
-                    double mu_l);
+                    const energy::Variables& v, const PlaneEvidence& evidence);
 
 // `mu_l`: the selectivity the fitting line processes were computed with.
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,

@@ -28,7 +28,7 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
                     PointIndicators* query_indicators) {
   const int count = static_cast<int>(queries.size());
   const int neighbors = problem.k() + 1;
-  const std::vector<double> support = PlaneSupport(v);
+  const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options);
   const int blend = std::min(options.blended_surfaces, neighbors);
   projected->resize(count);
   normals->resize(count);
@@ -49,7 +49,7 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
       (*projected)[q] = queries[q];
       (*normals)[q].setZero();
     }
-    out.outlier_score[q] = OutlierScore(p, nearest, found, v, support, mu_l);
+    out.outlier_score[q] = OutlierScore(p, nearest, found, v, evidence);
     out.is_outlier[q] = out.outlier_score[q] >= options.outlier_fraction;
     out.feature_score[q] = indicators.feature_score[nearest[0]];
     out.is_feature[q] = indicators.is_feature[nearest[0]];
