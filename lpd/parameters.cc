@@ -393,6 +393,13 @@ std::vector<Parameter> FinalStepParameters() {
                "its nearest neighbours, this many in all (at most k + 1)",
                "", "1"},
               [](O& o) -> int& { return o.final_step.blended_surfaces; }),
+      Integer("even_spacing", kBoth,
+              {kFinal,
+               "rounds of repulsion between nearest output points within their tangent planes, "
+               "each point then following its own fitted surface: the output's spacing evens "
+               "out instead of keeping the noise along the surface (0: off; 10 is measured in "
+               "docs/experiments.md)"},
+              [](O& o) -> int& { return o.final_step.even_spacing_rounds; }),
       Number("outlier_fraction", kBoth,
              {kOutliers,
               "outlier score (1 - the support-weighted fitting line processes the planes of "

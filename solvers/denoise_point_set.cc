@@ -8,6 +8,7 @@
 
 #include "energy/spatial_order.h"
 #include "energy/wall_clock.h"
+#include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
@@ -203,6 +204,26 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
                              options.settings.num_threads, &result.projected, &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
                                          options.final_step);
+  if (options.final_step.even_spacing_rounds > 0) {
+    energy::PointList normalized(result.projected.size());
+    std::vector<uint8_t> movable(result.projected.size());
+    for (size_t i = 0; i < normalized.size(); ++i) {
+      normalized[i] = problem.frame.ToNormalized(result.projected[i]);
+      movable[i] = !result.indicators.is_outlier[i];
+    }
+    const energy::PointList spread =
+        SpreadEvenly(normalized, result.normals, movable, options.final_step.even_spacing_rounds,
+                     options.settings.num_threads);
+    for (size_t i = 0; i < normalized.size(); ++i) {
+      // Follow i's own surface: keep the blend's offset from it.
+      Eigen::Vector3d from, to, normal;
+      if (!surfaces[i].Project(normalized[i], &from, &normal) ||
+          !surfaces[i].Project(spread[i], &to, &normal)) {
+        continue;
+      }
+      result.projected[i] = problem.frame.ToInput(normalized[i] + (to - from));
+    }
+  }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
                                         options.final_step.snapping, &result.projected);

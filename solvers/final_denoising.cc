@@ -30,6 +30,8 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
     out << "outlier_fraction must be in (0, 1], got " << outlier_fraction;
   } else if (!(local_noise_ratio >= 1.0 && local_noise_ratio <= 100.0)) {
     out << "local_noise_ratio must be in [1, 100], got " << local_noise_ratio;
+  } else if (even_spacing_rounds < 0 || even_spacing_rounds > 1000) {
+    out << "even_spacing must be in [0, 1000], got " << even_spacing_rounds;
   } else if (blended_surfaces < 1) {
     out << "blended_surfaces must be at least 1, got " << blended_surfaces;
   } else if (!InUnitInterval(feature_line_threshold)) {

@@ -55,6 +55,9 @@ struct FinalDenoisingOptions {
   // / 45 / all: FANDISK 0.03 1.829 / 1.811 / 1.800 / 1.804 / 1.831 / 1.884e-3, JOINT 0.03
   // 6.58 / 6.51 / 6.42 / 6.38 / 6.34 / 6.36e-3.
   int blended_surfaces = 30;
+  // Rounds of repulsion between nearest output points within their tangent planes, each
+  // point then following its own surface (even_spacing.h; 0: off, the default).
+  int even_spacing_rounds = 0;
   double outlier_fraction = 0.65;        // outlier score that makes an outlier, in (0, 1]
   // Largest factor by which a plane's region noise may widen its line process (above; 1:
   // the global mu_l only, as in the paper).

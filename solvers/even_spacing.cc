@@ -1,0 +1,75 @@
+#include "solvers/even_spacing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "energy/nearest_neighbors.h"
+
+namespace lpd::solvers {
+namespace {
+
+constexpr int kNeighbors = 10;  // pushing neighbours of a point
+constexpr double kStep = 0.1;   // largest move per round, in units of h
+// A point with a neighbour whose normal is more than 30 degrees off its own sits at a sharp
+// edge and stays: its tangent plane would carry it off the other face.
+constexpr double kMinNormalCosine = 0.866;
+
+}  // namespace
+
+energy::PointList SpreadEvenly(const energy::PointList& points, const energy::PointList& normals,
+                               const std::vector<uint8_t>& movable, int rounds,
+                               int num_threads) {
+  std::vector<int> rows;  // the movable points
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (movable[i]) rows.push_back(static_cast<int>(i));
+  }
+  energy::PointList result = points;
+  const int count = static_cast<int>(rows.size());
+  if (rounds <= 0 || count <= kNeighbors) return result;
+  energy::PointList current(count);
+  for (int r = 0; r < count; ++r) current[r] = points[rows[r]];
+  double h = 0.0;
+  energy::PointList next(count);
+  for (int round = 0; round < rounds; ++round) {
+    const energy::NearestNeighbors search(current);
+    auto query = [&current](int r) { return current[r]; };
+    if (round == 0) {
+      std::vector<double> nearest(count, 0.0);
+      search.ForEach(count, 2, num_threads, query,
+                     [&](int r, const int*, const double* squared, int found) {
+                       nearest[r] = found > 1 ? std::sqrt(squared[1]) : 0.0;
+                     });
+      const auto middle = nearest.begin() + count / 2;
+      std::nth_element(nearest.begin(), middle, nearest.end());
+      h = 2.0 * *middle;
+      if (!(h > 0.0)) return result;
+    }
+    search.ForEach(count, kNeighbors + 1, num_threads, query,
+                   [&](int r, const int* nearest, const double* squared, int found) {
+                     const energy::Point3& p = current[r];
+                     const energy::Point3& n = normals[rows[r]];
+                     energy::Point3 force = energy::Point3::Zero();
+                     for (int a = 0; a < found; ++a) {
+                       if (nearest[a] == r || !(squared[a] > 0.0)) continue;
+                       if (std::abs(n.dot(normals[rows[nearest[a]]])) < kMinNormalCosine) {
+                         next[r] = p;  // at a sharp edge: stays
+                         return;
+                       }
+                       const double distance = std::sqrt(squared[a]);
+                       force += (p - current[nearest[a]]) / distance *
+                                std::exp(-4.0 * squared[a] / (h * h));
+                     }
+                     if (n.squaredNorm() == 0.0) {
+                       next[r] = p;
+                       return;
+                     }
+                     force -= n * n.dot(force);
+                     next[r] = p + kStep * h * force / std::max(1.0, force.norm());
+                   });
+    current.swap(next);
+  }
+  for (int r = 0; r < count; ++r) result[rows[r]] = current[r];
+  return result;
+}
+
+}  // namespace lpd::solvers

@@ -1,0 +1,38 @@
+// lpd: even spacing over the denoised surface.
+//
+// The projection of Sec. 3.4 moves each point along the normal only, so the output keeps the
+// tangential part of the noise: it is clumpier than a scan of the clean surface. On 10,000
+// Poisson-disk samples of the bunny with 3% noise, even the exact normal projection (each
+// sample moved back by the normal part of its own noise) is 3.68e-4 in Chamfer distance from
+// the clean samples, where a second Poisson-disk sample is 2.00e-4.
+//
+// SpreadEvenly pushes nearest neighbours apart within each point's tangent plane, in rounds
+// (Jacobi: every move from the positions of the round before), skipping a point that has a
+// neighbour whose normal is more than 30 degrees off its own (a sharp edge):
+//   f_i = sum_{j in the kNeighbors nearest} (p_i - p_j) / |p_i - p_j| exp(-4 |p_i - p_j|^2 / h^2)
+//   p_i += kStep h P_i f_i / max(1, |P_i f_i|),   P_i = I - n_i n_i^T,
+// with h twice the median distance from a point to its nearest neighbour (the repulsion of
+// WLOP, Huang et al. 2009, without its attraction to the input: the caller projects the moved
+// points back onto the fitted surfaces). A point moves at most kStep h per round. In a run
+// on a subsample (subsample_extension.h), the subsample's points are spread, not the points
+// projected onto its surfaces afterwards.
+#ifndef LPD_SOLVERS_EVEN_SPACING_H_
+#define LPD_SOLVERS_EVEN_SPACING_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "energy/point3.h"
+
+namespace lpd::solvers {
+
+// `points` after `rounds` rounds of the repulsion above. Only the points with movable[i] move
+// and push (the others, such as outliers, are left out); `normals` are unit normals, and a
+// point with a zero normal stays. Deterministic for any thread count.
+energy::PointList SpreadEvenly(const energy::PointList& points, const energy::PointList& normals,
+                               const std::vector<uint8_t>& movable, int rounds,
+                               int num_threads);
+
+}  // namespace lpd::solvers
+
+#endif  // LPD_SOLVERS_EVEN_SPACING_H_
