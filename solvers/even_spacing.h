@@ -12,8 +12,8 @@
 //   f_i = sum_{j in the kNeighbors nearest} (p_i - p_j) / |p_i - p_j| exp(-4 |p_i - p_j|^2 / h^2)
 //   p_i += kStep h P_i f_i / max(1, |P_i f_i|),   P_i = I - n_i n_i^T,
 // with h twice the median distance from a point to its nearest neighbour (the repulsion of
-// WLOP, Huang et al. 2009, without its attraction to the input: the caller projects the moved
-// points back onto the fitted surfaces). A point moves at most kStep h per round. In a run
+// WLOP, Huang et al. 2009, without its attraction to the input: the caller carries each moved
+// point along its own fitted surface, FinishDenoising). A point moves at most kStep h per round. In a run
 // on a subsample (subsample_extension.h), the subsample's points are spread, not the points
 // projected onto its surfaces afterwards.
 #ifndef LPD_SOLVERS_EVEN_SPACING_H_
