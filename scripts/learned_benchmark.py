@@ -12,7 +12,8 @@ the table keeps, per noise level and size, the setting with the lowest mean CD o
 
 Usage:
   scripts/learned_benchmark.py [--meshes FILE_OR_DIR ...] [--sizes 10000 50000]
-                               [--sigmas 0.01 0.02 0.03] [--no-thin] [--results DIR]
+                               [--sigmas 0.01 0.02 0.03] [--no-thin] [--even-spacing N]
+                               [--results DIR]
   scripts/learned_benchmark.py --table-only --results DIR
 Default meshes: every mesh of ${LPD_DATA:-../shared/data}/meshes except the 8-vertex cube,
 plus procedural thin parts (two plates, two parallel sheets, a thin cylinder).
@@ -59,7 +60,7 @@ def expand(paths):
     return meshes
 
 
-def write_config(path, meshes, sizes, sigmas, thin):
+def write_config(path, meshes, sizes, sigmas, thin, even_spacing):
     lines = [
         "# Written by scripts/learned_benchmark.py: the learned denoisers' benchmark protocol.",
         "name: learned_benchmark",
@@ -77,8 +78,10 @@ def write_config(path, meshes, sizes, sigmas, thin):
                       f"    points: {size}", "    sampling: poisson_disk"]
     lines += ["noise:", "  - model: gaussian", "    scale: unit_sphere_radius",
               f"    sigma: [{', '.join(str(s) for s in sigmas)}]",
-              "methods:", "  - method: none", "  - method: lpd",
-              "  - method: bilateral"]
+              "methods:", "  - method: none", "  - method: lpd"]
+    if even_spacing:
+        lines += ["  - method: lpd", f"    even_spacing: [{even_spacing}]"]
+    lines.append("  - method: bilateral")
     for key, values in BILATERAL_GRID.items():
         lines.append(f"    {key}: [{', '.join(str(v) for v in values)}]")
     path.write_text("\n".join(lines) + "\n")
@@ -98,8 +101,8 @@ def load(results):
     for row in rows:
         shape, size = row["dataset"].rsplit("@", 1)
         label = row["method"]
-        if label == "bilateral":
-            label = "bilateral " + row["method_parameters"]
+        if row["method_parameters"]:
+            label += " " + row["method_parameters"]
         cells[(shape, size, number(row["noise_sigma"]))][label] = (
             number(row["cd_x1e4"]), number(row["p2m_x1e4"]), number(row["seconds"]))
     return cells
@@ -135,7 +138,9 @@ def print_tables(results):
     for group, members in groups:
         if not members or (group and len(members) == len(shapes)):
             continue
-        for method in ["none", "lpd", "bilateral"]:
+        variants = sorted({label for cell in cells.values() for label in cell
+                           if label.startswith("lpd ")})
+        for method in ["none", "lpd", *variants, "bilateral"]:
             row = []
             for size, sigma in levels:
                 label = best_bilateral.get((size, sigma)) if method == "bilateral" else method
@@ -145,7 +150,8 @@ def print_tables(results):
                 row.append(f"{mean([f[0] for f in figures]):.2f} / "
                            f"{mean([f[1] for f in figures]):.2f}" if figures else "")
             name = {"none": "noisy input", "lpd": "lpd (defaults)",
-                    "bilateral": "CGAL bilateral, best setting per column"}[method]
+                    "bilateral": "CGAL bilateral, best setting per column"}.get(
+                        method, f"lpd --{method[4:]}")
             print(f"| {name}{group} ({len(members)}) | " + " | ".join(row) + " |")
     if best_bilateral:
         print("\nBilateral settings: " + "; ".join(
@@ -187,6 +193,8 @@ def main():
     parser.add_argument("--results", default="results/learned_benchmark")
     parser.add_argument("--threads", type=int, default=0, help="0: all cores")
     parser.add_argument("--table-only", action="store_true", help="only print the tables")
+    parser.add_argument("--even-spacing", type=int, default=0, metavar="N",
+                        help="also run lpd with --even_spacing=N")
     parser.add_argument("--lpd", default=str(ROOT / "build" / "lpd"), help="the lpd binary")
     args = parser.parse_args()
     results = pathlib.Path(args.results)
@@ -194,7 +202,8 @@ def main():
         meshes = expand(args.meshes) if args.meshes else default_meshes()
         results.mkdir(parents=True, exist_ok=True)
         config = results / "learned_benchmark.yaml"
-        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin)
+        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin,
+                     args.even_spacing)
         command = [args.lpd, "sweep", str(config), f"--results_dir={results}"]
         if args.threads:
             command.append(f"--threads={args.threads}")
