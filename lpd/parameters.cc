@@ -408,9 +408,10 @@ std::vector<Parameter> FinalStepParameters() {
              [](O& o) -> double& { return o.final_step.outlier_fraction; }),
       Number("local_noise_ratio", kBoth,
              {kOutliers,
-              "each plane scores points against its region's noise: its line process widens "
-              "by the ratio of the region's residual scale to the median over all regions, "
-              "clamped to [1, this] (1: the global mu_l only)",
+              "each plane scores points against its region's noise: where the region's "
+              "residual scale is at least 1.5x the median region's and the region is as dense "
+              "as the surface, its line process widens by that ratio, up to this (1: the "
+              "global mu_l only)",
               "", "1"},
              [](O& o) -> double& { return o.final_step.local_noise_ratio; }),
       Number("feature_threshold", kBoth, {kFinal, "m_ij below this counts as a feature vote"},

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "energy/nearest_neighbors.h"
+#include "solvers/median.h"
 
 namespace lpd::solvers {
 namespace {
@@ -39,9 +40,7 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
                      [&](int r, const int*, const double* squared, int found) {
                        nearest[r] = found > 1 ? std::sqrt(squared[1]) : 0.0;
                      });
-      const auto middle = nearest.begin() + count / 2;
-      std::nth_element(nearest.begin(), middle, nearest.end());
-      h = 2.0 * *middle;
+      h = 2.0 * Median(&nearest);
       if (!(h > 0.0)) return result;
     }
     search.ForEach(count, kNeighbors + 1, num_threads, query,

@@ -13,9 +13,9 @@
 //   p_i += kStep h P_i f_i / max(1, |P_i f_i|),   P_i = I - n_i n_i^T,
 // with h twice the median distance from a point to its nearest neighbour (the repulsion of
 // WLOP, Huang et al. 2009, without its attraction to the input: the caller carries each moved
-// point along its own fitted surface, FinishDenoising). A point moves at most kStep h per round. In a run
-// on a subsample (subsample_extension.h), the subsample's points are spread, not the points
-// projected onto its surfaces afterwards.
+// point along its own fitted surface, FinishDenoising). A point moves at most kStep h per
+// round. In a run on a subsample (subsample_extension.h), the subsample's points are spread,
+// not the points projected onto its surfaces afterwards.
 #ifndef LPD_SOLVERS_EVEN_SPACING_H_
 #define LPD_SOLVERS_EVEN_SPACING_H_
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "energy/geman_mcclure.h"
+#include "solvers/median.h"
 #include "solvers/parse_by_name.h"
 
 namespace lpd::solvers {
@@ -66,14 +67,6 @@ double PlaneResidual(const energy::Variables& v, int j, const energy::Point3& p)
 constexpr double kMinRegionNoiseRatio = 1.5;
 constexpr double kMaxRadiusRatio = 2.0;
 
-// The median of `values` (reordered); 0 when empty.
-double MedianOf(std::vector<double>* values) {
-  if (values->empty()) return 0.0;
-  const auto middle = values->begin() + values->size() / 2;
-  std::nth_element(values->begin(), middle, values->end());
-  return *middle;
-}
-
 }  // namespace
 
 PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy::Variables& v,
@@ -85,7 +78,7 @@ PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy:
   evidence.mu.assign(n, mu_l);
   evidence.support.resize(n);
   for (int j = 0; j < n; ++j) evidence.support[j] = v.l.row(j).mean();
-  if (options.local_noise_ratio <= 1.0) return evidence;
+  if (options.local_noise_ratio <= 1.0 || n == 0) return evidence;
   // s_j: the robust residual scale of h_j over its own neighbourhood; sigma_j: the median
   // of s over N(j) u {j}, steadier than one median of k + 1 residuals.
   // radius_j: the distance from q_j to its farthest fitting point.
@@ -97,16 +90,16 @@ PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy:
       values[a] = std::abs(PlaneResidual(v, j, q));
       radius[j] = std::max(radius[j], (q - problem.points[j]).norm());
     }
-    scale[j] = 1.4826 * MedianOf(&values);
+    scale[j] = 1.4826 * Median(&values);
   }
   for (int j = 0; j < n; ++j) {
     for (int a = 0; a < columns; ++a) values[a] = scale[graph.FittingPoint(j, a)];
-    region_scale[j] = MedianOf(&values);
+    region_scale[j] = Median(&values);
   }
   std::vector<double> all = region_scale;
-  const double typical = MedianOf(&all);
+  const double typical = Median(&all);
   all = radius;
-  const double typical_radius = MedianOf(&all);
+  const double typical_radius = Median(&all);
   for (int j = 0; j < n; ++j) {
     const bool surface_density = radius[j] <= kMaxRadiusRatio * typical_radius;
     const double ratio = typical > 0.0 ? region_scale[j] / typical : 0.0;
