@@ -123,8 +123,8 @@ solvers::IterationCallback ProgressPrinter(solvers::Solver solver, bool quiet) {
 solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
   // What made the saved problem and start cannot change now (and the preset would only
   // restate parameters the state already fixes).
-  for (const char* fixed : {"k", "k_radius_sigmas", "max_k", "max_problem_size", "far_factor",
-                            "initialization", "initialization_seed", "preset"}) {
+  for (const char* fixed : {"k", "k_radius_sigmas", "k_wide_noise", "max_k", "max_problem_size",
+                            "far_factor", "initialization", "initialization_seed", "preset"}) {
     if (FlagGiven(fixed)) {
       throw std::invalid_argument(std::string("--") + fixed +
                                   " cannot change on --resume (the state fixes it)");
@@ -255,9 +255,12 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
       result.total_seconds, result.setup_seconds);
   std::string chosen;
   if (result.neighborhood.spacing > 0.0) {
-    char text[160];
-    std::snprintf(text, sizeof(text), " (from noise %.3g and spacing %.3g of the diagonal)",
-                  result.neighborhood.noise_sigma, result.neighborhood.spacing);
+    char text[200];
+    std::snprintf(text, sizeof(text),
+                  " (from noise %.3g and spacing %.3g of the diagonal: radius %.3g noise "
+                  "deviations)",
+                  result.neighborhood.noise_sigma, result.neighborhood.spacing,
+                  result.neighborhood.radius_in_sigmas);
     chosen = text;
   }
   if (result.subsampled) {

@@ -31,6 +31,8 @@ std::vector<std::pair<std::string, std::string>> Derived(const solvers::DenoiseO
   return {{"k", Integer(result.neighborhood.k)},
           {"noise_sigma", JsonNumber(result.neighborhood.noise_sigma)},
           {"spacing", JsonNumber(result.neighborhood.spacing)},
+          {"k_radius_sigmas", JsonNumber(result.neighborhood.radius_in_sigmas)},
+          {"two_sheet_fraction", JsonNumber(result.neighborhood.two_sheet_fraction)},
           {"eta", JsonNumber(result.summary.eta)},
           {"lambda", JsonNumber(result.summary.lambda)},
           {"mu_l", JsonNumber(result.summary.mu_l)},

@@ -180,6 +180,13 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
               "with k auto, k = pi (this x noise sigma / point spacing)^2: the neighbourhood "
               "radius in estimated noise deviations"},
              [](O& o) -> double& { return o.neighborhood.radius_in_sigmas; }),
+      Flag("k_wide_noise", kBoth,
+           {kNeighbours,
+            "with k auto, where the noise probe reads sigma above 1.15 spacings (where it reads "
+            "low, as measured on a noisy plane), widen the radius by the plane's under-reading: "
+            "better at noise well above the spacing, worse on thin parts whose sides are under "
+            "3 noise deviations apart; slower (k up to max_k)"},
+           [](O& o) -> bool& { return o.neighborhood.wide_noise; }),
       Integer("max_k", kBoth, {kNeighbours, "with k auto, the largest k chosen"},
               [](O& o) -> int& { return o.neighborhood.max_k; }),
       Flag("split_sheets", kBoth,
@@ -589,7 +596,7 @@ void RefuseConflictingParameters(
       {"eta", "fit_balance"},         {"lambda", "smoothing_balance"},
       {"mu_l", "mu_l_noise_sigmas"},  {"mu_m", "mu_m_deg"},
       {"k", "k_radius_sigmas"},       {"k", "max_k"},
-      {"k", "max_problem_size"},
+      {"k", "max_problem_size"},      {"k", "k_wide_noise"},
   };
   // The value of `name` among `given`, or nullptr.
   auto value_of = [&given](const char* name) -> const std::string* {

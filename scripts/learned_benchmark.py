@@ -13,7 +13,7 @@ the table keeps, per noise level and size, the setting with the lowest mean CD o
 Usage:
   scripts/learned_benchmark.py [--meshes FILE_OR_DIR ...] [--sizes 10000 50000]
                                [--sigmas 0.01 0.02 0.03] [--no-thin] [--even-spacing N]
-                               [--results DIR]
+                               [--variant NAME=VALUE[,VALUE...] ...] [--results DIR]
   scripts/learned_benchmark.py --table-only --results DIR
 Default meshes: every mesh of ${LPD_DATA:-../shared/data}/meshes except the 8-vertex cube,
 plus procedural thin parts (two plates, two parallel sheets, a thin cylinder).
@@ -60,7 +60,7 @@ def expand(paths):
     return meshes
 
 
-def write_config(path, meshes, sizes, sigmas, thin, even_spacing):
+def write_config(path, meshes, sizes, sigmas, thin, even_spacing, variants):
     lines = [
         "# Written by scripts/learned_benchmark.py: the learned denoisers' benchmark protocol.",
         "name: learned_benchmark",
@@ -81,6 +81,9 @@ def write_config(path, meshes, sizes, sigmas, thin, even_spacing):
               "methods:", "  - method: none", "  - method: lpd"]
     if even_spacing:
         lines += ["  - method: lpd", f"    even_spacing: [{even_spacing}]"]
+    for variant in variants:  # NAME=VALUE[,VALUE...]: one lpd row per value
+        name, values = variant.split("=", 1)
+        lines += ["  - method: lpd", f"    {name}: [{', '.join(values.split(','))}]"]
     lines.append("  - method: bilateral")
     for key, values in BILATERAL_GRID.items():
         lines.append(f"    {key}: [{', '.join(str(v) for v in values)}]")
@@ -195,6 +198,9 @@ def main():
     parser.add_argument("--table-only", action="store_true", help="only print the tables")
     parser.add_argument("--even-spacing", type=int, default=0, metavar="N",
                         help="also run lpd with --even_spacing=N")
+    parser.add_argument("--variant", action="append", default=[], metavar="NAME=VALUES",
+                        help="also run lpd with --NAME=VALUE for each of the comma-separated "
+                             "values (repeatable), e.g. k_radius_sigmas=3.5,4.6")
     parser.add_argument("--lpd", default=str(ROOT / "build" / "lpd"), help="the lpd binary")
     args = parser.parse_args()
     results = pathlib.Path(args.results)
@@ -203,7 +209,7 @@ def main():
         results.mkdir(parents=True, exist_ok=True)
         config = results / "learned_benchmark.yaml"
         write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin,
-                     args.even_spacing)
+                     args.even_spacing, args.variant)
         command = [args.lpd, "sweep", str(config), f"--results_dir={results}"]
         if args.threads:
             command.append(f"--threads={args.threads}")

@@ -41,7 +41,39 @@ namespace {
 
 // At most this many probe neighbourhoods: their medians are then stable to about 0.5%.
 constexpr int kMaxProbeQueries = 1 << 17;
+
+// The probe's reading on a plane with Gaussian noise: sigma / spacing as read, and the read
+// sigma over the true one (20,000 Poisson-disk points on two unit squares half a unit apart,
+// scripts/probe_calibration.sh; tests/solvers/neighborhood_size_test.cc checks it).
+struct PlaneReading {
+  double read_ratio;  // read sigma / read spacing
+  double fraction;    // read sigma / true sigma
+};
+constexpr PlaneReading kPlaneReadings[] = {
+    {1.001, 0.826}, {1.042, 0.799}, {1.077, 0.773}, {1.103, 0.747}, {1.127, 0.722},
+    {1.167, 0.679}, {1.197, 0.641}, {1.219, 0.607}, {1.256, 0.538}, {1.274, 0.485},
+    {1.305, 0.414},
+};
+
 }  // namespace
+
+double PlaneReadFraction(double read_ratio) {
+  const auto* first = std::begin(kPlaneReadings);
+  const auto* last = std::end(kPlaneReadings) - 1;
+  if (read_ratio <= first->read_ratio) return first->fraction;
+  if (read_ratio >= last->read_ratio) return last->fraction;
+  const auto* upper = std::find_if(first, last, [read_ratio](const PlaneReading& r) {
+    return r.read_ratio >= read_ratio;
+  });
+  const auto* lower = upper - 1;
+  const double t = (read_ratio - lower->read_ratio) / (upper->read_ratio - lower->read_ratio);
+  return lower->fraction + t * (upper->fraction - lower->fraction);
+}
+
+double WideNoiseFactor(double read_ratio) {
+  if (!(read_ratio > kCalibratedReadRatio)) return 1.0;
+  return PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(read_ratio);
+}
 
 NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                         const NeighborhoodSizeOptions& options,
@@ -165,7 +197,10 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
         "most points coincide with their " + std::to_string(k) +
         " nearest neighbours: no spacing to choose k from (remove the duplicates or give --k)");
   }
-  const double radius_in_spacings = options.radius_in_sigmas * size.noise_sigma / size.spacing;
+  // Past the calibrated range the probe reads the noise ever lower (WideNoiseFactor).
+  size.radius_in_sigmas = options.radius_in_sigmas;
+  if (options.wide_noise) size.radius_in_sigmas *= WideNoiseFactor(size.noise_sigma / size.spacing);
+  const double radius_in_spacings = size.radius_in_sigmas * size.noise_sigma / size.spacing;
   const double chosen = M_PI * radius_in_spacings * radius_in_spacings;
   const int largest = std::min<int>(options.max_k, n - 1);
   size.k = static_cast<int>(std::lround(std::clamp(chosen, double(options.min_k),

@@ -17,6 +17,16 @@
 // also carries the noise, 2 sigma^2 per pair, so at noise near the spacing this reads high
 // (10% at sigma = 0.85 spacing); c was calibrated with this reading. With noise wider than
 // a few spacings the probe reads low (thinning.h).
+//
+// Noise near the spacing. The probe's 41 points span about 3.6 spacings; as the noise grows
+// towards that, their plane tilts into the noise and the reading falls ever faster: on a
+// plane, the read sigma is 0.83 of the true one where it reads 1.0 spacing, 0.70 at 1.15,
+// 0.54 at 1.26, 0.41 at 1.31. c was calibrated up to kCalibratedReadRatio (FANDISK 0.03 reads
+// 1.07; the learned denoisers' benchmark at 50,000 points and 2% noise, 1.03-1.23, where 4.15
+// was about best). With wide_noise, c grows past it by the plane's further fall
+// (WideNoiseFactor): JOINT 0.03 (1.28) and the benchmark's meshes at 3% come out closer, but
+// thin parts whose sides the probe cannot tell apart read as wide noise too and come out
+// worse, so it is off by default (docs/method.md, "Noise near the spacing").
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 #define LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 
@@ -31,6 +41,9 @@ struct NeighborhoodSizeOptions {
   double radius_in_sigmas = 4.15;
   int min_k = 12;
   int max_k = 150;
+  // c x WideNoiseFactor instead of c (off by default: docs/method.md, "Noise near the
+  // spacing").
+  bool wide_noise = false;
   // Measure each side of a thin part from its own plane (energy/sheet_split.h; paper: no).
   bool split_sheets = true;
   // The largest problem solved, in neighbour entries n k; past it a subsample is solved
@@ -41,9 +54,22 @@ struct NeighborhoodSizeOptions {
   bool IsValid(std::string* error) const;
 };
 
+// The fraction of the true sigma the probe reads on a plane with Gaussian noise where it
+// reads this sigma / spacing (linear between the measured readings, held past their ends).
+double PlaneReadFraction(double read_ratio);
+
+// The probe's read sigma / spacing up to which c holds.
+constexpr double kCalibratedReadRatio = 1.15;
+
+// c's factor at this read sigma / spacing: 1 up to kCalibratedReadRatio, then the fraction of
+// the true sigma the probe reads on a plane there over the fraction it reads at
+// kCalibratedReadRatio (1.09 at 1.2, 1.30 at 1.26, held at 1.68 from 1.31 on).
+double WideNoiseFactor(double read_ratio);
+
 struct NeighborhoodSize {
   double noise_sigma = 0.0;  // in the normalized frame (bounding-box diagonal 1)
   double spacing = 0.0;      // likewise
+  double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
 };

@@ -3,10 +3,14 @@
 #include "solvers/neighborhood_size.h"
 
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
+#include "energy/normalization.h"
+#include "experiments/shapes/poisson_disk_sampling.h"
+#include "experiments/shapes/shape_catalog.h"
 #include "test_problems.h"
 
 namespace lpd::solvers {
@@ -31,6 +35,42 @@ TEST(NeighborhoodSize, RecoversTheNoiseAndSpacingOfANoisySquare) {
   // The k of that noise and spacing: pi (4.2 sigma / spacing)^2 = 33.
   const double expected_k = M_PI * std::pow(options.radius_in_sigmas * sigma / spacing, 2);
   EXPECT_NEAR(size.k, expected_k, 0.25 * expected_k);
+}
+
+// The probe's reading on a plane, measured afresh: Poisson-disk samples of two unit squares
+// half a unit apart with isotropic Gaussian noise, as the stored readings were made.
+TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
+  const experiments::ProceduralShape sheets =
+      experiments::MakeShape(experiments::ParseShapeSpec("sheets:size=1,gap=0.5"));
+  const energy::PointList clean =
+      experiments::PoissonDiskSample(sheets, 20000, /*seed=*/11).points;
+  NeighborhoodSizeOptions options;
+  options.wide_noise = true;
+  for (const double sigma : {0.015, 0.024, 0.0375}) {  // reads about 1.0, 1.17 and 1.26
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> normal(0.0, sigma);
+    energy::PointList noisy = clean;
+    for (energy::Point3& p : noisy) p += energy::Point3(normal(rng), normal(rng), normal(rng));
+    const NeighborhoodSize size = ChooseNeighborhoodSize(noisy, options, 2);
+    const double true_sigma = sigma / energy::BoundingBoxDiagonal(noisy);
+    const double read_ratio = size.noise_sigma / size.spacing;
+    EXPECT_NEAR(size.noise_sigma / true_sigma, PlaneReadFraction(read_ratio),
+                0.05 * PlaneReadFraction(read_ratio))
+        << "sigma " << sigma << ", read sigma / spacing " << read_ratio;
+    // With wide_noise, k follows c x WideNoiseFactor, which holds c up to
+    // kCalibratedReadRatio.
+    const double factor = read_ratio > kCalibratedReadRatio
+                              ? PlaneReadFraction(kCalibratedReadRatio) /
+                                    PlaneReadFraction(read_ratio)
+                              : 1.0;
+    EXPECT_DOUBLE_EQ(size.radius_in_sigmas, options.radius_in_sigmas * factor);
+    NeighborhoodSizeOptions plain = options;  // the default: c as given
+    plain.wide_noise = false;
+    EXPECT_EQ(ChooseNeighborhoodSize(noisy, plain, 2).radius_in_sigmas, options.radius_in_sigmas);
+  }
+  EXPECT_EQ(WideNoiseFactor(0.5), 1.0);
+  EXPECT_EQ(WideNoiseFactor(kCalibratedReadRatio), 1.0);
+  EXPECT_GT(WideNoiseFactor(1.26), 1.25);
 }
 
 TEST(NeighborhoodSize, StaysWithinItsBoundsAndRefusesTooFewPoints) {
