@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -54,7 +55,6 @@ constexpr PlaneReading kPlaneReadings[] = {
     {1.167, 0.679}, {1.197, 0.641}, {1.219, 0.607}, {1.256, 0.538}, {1.274, 0.485},
     {1.305, 0.414},
 };
-
 }  // namespace
 
 double PlaneReadFraction(double read_ratio) {
@@ -199,7 +199,9 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   }
   // Past the calibrated range the probe reads the noise ever lower (WideNoiseFactor).
   size.radius_in_sigmas = options.radius_in_sigmas;
-  if (options.wide_noise) size.radius_in_sigmas *= WideNoiseFactor(size.noise_sigma / size.spacing);
+  if (options.wide_noise) {
+    size.radius_in_sigmas *= WideNoiseFactor(size.noise_sigma / size.spacing);
+  }
   const double radius_in_spacings = size.radius_in_sigmas * size.noise_sigma / size.spacing;
   const double chosen = M_PI * radius_in_spacings * radius_in_spacings;
   const int largest = std::min<int>(options.max_k, n - 1);
