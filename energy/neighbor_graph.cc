@@ -42,43 +42,47 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   const int searched =
       split_sheets ? std::min(n, std::max(2 * k + 1, kSheetSplitPoints)) : k + 1;
   std::vector<float> separation(split_sheets ? n : 0);
+  // With split_sheets, each point's k nearest candidates on its own side, in case its region
+  // turns out thin (found in the same search, so that a thin region needs no second one).
+  std::vector<int> own_side(split_sheets ? static_cast<size_t>(n) * k : 0);
   search.ForEach(
       n, searched, num_threads, [&points](int i) { return points[i]; },
       [&](int i, const int* nearest, const double*, int found) {
         thread_local std::vector<int> members;
         Members(i, nearest, found, searched, &members);
         std::copy_n(members.begin() + 1, k, graph.neighbors.data() + static_cast<size_t>(i) * k);
-        if (split_sheets) {
-          separation[i] = static_cast<float>(
-              SplitSheets(points, members.data(), static_cast<int>(members.size())).separation);
+        if (!split_sheets) return;
+        const SheetSplit split =
+            SplitSheets(points, members.data(), static_cast<int>(members.size()));
+        separation[i] = static_cast<float>(split.separation);
+        int* own = own_side.data() + static_cast<size_t>(i) * k;
+        if (!(split.separation > 0.0)) {  // not two parallel sides here
+          std::copy_n(members.begin() + 1, k, own);
+          return;
+        }
+        // The nearest on p_i's side, then (if fewer than k) the nearest of the other side.
+        const int side = split.Side(split.Offset(points[i]));
+        int count = 0;
+        for (size_t a = 1; a < members.size() && count < k; ++a) {
+          if (split.Side(split.Offset(points[members[a]])) == side) own[count++] = members[a];
+        }
+        for (size_t a = 1; a < members.size() && count < k; ++a) {
+          if (split.Side(split.Offset(points[members[a]])) != side) own[count++] = members[a];
         }
       });
   if (split_sheets) {
     // Where the region around p_i is a thin part (sheet_split.h), N(i) is the k nearest
-    // candidates on p_i's own side.
+    // candidates on p_i's own side. The regions are judged on the unsplit N first.
     std::vector<int> thin;
     for (int i = 0; i < n; ++i) {
       double sum = separation[i];
       for (int a = 0; a < k; ++a) sum += separation[graph.NeighborsOf(i)[a]];
       if (sum / (k + 1) > kThinRegionSeparation) thin.push_back(i);
     }
-    search.ForEach(
-        static_cast<int>(thin.size()), searched, num_threads,
-        [&](int row) { return points[thin[row]]; },
-        [&](int row, const int* nearest, const double*, int found) {
-          const int i = thin[row];
-          thread_local std::vector<int> members;
-          Members(i, nearest, found, searched, &members);
-          const SheetSplit split =
-              SplitSheets(points, members.data(), static_cast<int>(members.size()));
-          if (!(split.separation > 0.0)) return;  // not two parallel sides here
-          const int side = split.Side(split.Offset(points[i]));
-          std::stable_partition(members.begin() + 1, members.end(), [&](int j) {
-            return split.Side(split.Offset(points[j])) == side;
-          });
-          std::copy_n(members.begin() + 1, k,
-                      graph.neighbors.data() + static_cast<size_t>(i) * k);
-        });
+    for (int i : thin) {
+      std::copy_n(own_side.data() + static_cast<size_t>(i) * k, k,
+                  graph.neighbors.data() + static_cast<size_t>(i) * k);
+    }
   }
   BuildPairs(&graph);
   return graph;
