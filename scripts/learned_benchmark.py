@@ -60,7 +60,7 @@ def expand(paths):
     return meshes
 
 
-def write_config(path, meshes, sizes, sigmas, thin, even_spacing, variants):
+def write_config(path, meshes, sizes, sigmas, thin, variants):
     lines = [
         "# Written by scripts/learned_benchmark.py: the learned denoisers' benchmark protocol.",
         "name: learned_benchmark",
@@ -79,8 +79,6 @@ def write_config(path, meshes, sizes, sigmas, thin, even_spacing, variants):
     lines += ["noise:", "  - model: gaussian", "    scale: unit_sphere_radius",
               f"    sigma: [{', '.join(str(s) for s in sigmas)}]",
               "methods:", "  - method: none", "  - method: lpd"]
-    if even_spacing:
-        lines += ["  - method: lpd", f"    even_spacing: [{even_spacing}]"]
     for variant in variants:  # NAME=VALUE[,VALUE...]: one lpd row per value
         name, values = variant.split("=", 1)
         lines += ["  - method: lpd", f"    {name}: [{', '.join(values.split(','))}]"]
@@ -208,8 +206,10 @@ def main():
         meshes = expand(args.meshes) if args.meshes else default_meshes()
         results.mkdir(parents=True, exist_ok=True)
         config = results / "learned_benchmark.yaml"
-        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin,
-                     args.even_spacing, args.variant)
+        # --even-spacing N is the variant even_spacing=N.
+        variants = ([f"even_spacing={args.even_spacing}"] if args.even_spacing else []) + \
+            args.variant
+        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin, variants)
         command = [args.lpd, "sweep", str(config), f"--results_dir={results}"]
         if args.threads:
             command.append(f"--threads={args.threads}")

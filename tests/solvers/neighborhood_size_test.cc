@@ -66,7 +66,8 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
     EXPECT_DOUBLE_EQ(size.radius_in_sigmas, options.radius_in_sigmas * factor);
     NeighborhoodSizeOptions plain = options;  // the default: c as given
     plain.wide_noise = false;
-    EXPECT_EQ(ChooseNeighborhoodSize(noisy, plain, 2).radius_in_sigmas, options.radius_in_sigmas);
+    EXPECT_EQ(ChooseNeighborhoodSize(noisy, plain, 2).radius_in_sigmas,
+              options.radius_in_sigmas);
   }
   EXPECT_EQ(WideNoiseFactor(0.5), 1.0);
   EXPECT_EQ(WideNoiseFactor(kCalibratedReadRatio), 1.0);
