@@ -27,7 +27,7 @@ void Members(int i, const int* nearest, int found, int wanted, std::vector<int>*
 }  // namespace
 
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
-                                 bool split_sheets) {
+                                 bool split_sheets, const SplitSearch* searched_before) {
   if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
   const int n = static_cast<int>(points.size());
   if (n < k + 1) {
@@ -38,38 +38,48 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   NeighborGraph graph;
   graph.k = k;
   graph.neighbors.resize(static_cast<size_t>(n) * k);
-  const NearestNeighbors search(points);
   const int searched =
       split_sheets ? std::min(n, std::max(2 * k + 1, kSheetSplitPoints)) : k + 1;
   std::vector<float> separation(split_sheets ? n : 0);
   // With split_sheets, each point's k nearest candidates on its own side, in case its region
   // turns out thin (found in the same search, so that a thin region needs no second one).
   std::vector<int> own_side(split_sheets ? static_cast<size_t>(n) * k : 0);
-  search.ForEach(
-      n, searched, num_threads, [&points](int i) { return points[i]; },
-      [&](int i, const int* nearest, const double*, int found) {
-        thread_local std::vector<int> members;
-        Members(i, nearest, found, searched, &members);
-        std::copy_n(members.begin() + 1, k, graph.neighbors.data() + static_cast<size_t>(i) * k);
-        if (!split_sheets) return;
-        const SheetSplit split =
-            SplitSheets(points, members.data(), static_cast<int>(members.size()));
-        separation[i] = static_cast<float>(split.separation);
-        int* own = own_side.data() + static_cast<size_t>(i) * k;
-        if (!(split.separation > 0.0)) {  // not two parallel sides here
-          std::copy_n(members.begin() + 1, k, own);
-          return;
-        }
-        // The nearest on p_i's side, then (if fewer than k) the nearest of the other side.
-        const int side = split.Side(split.Offset(points[i]));
-        int count = 0;
-        for (size_t a = 1; a < members.size() && count < k; ++a) {
-          if (split.Side(split.Offset(points[members[a]])) == side) own[count++] = members[a];
-        }
-        for (size_t a = 1; a < members.size() && count < k; ++a) {
-          if (split.Side(split.Offset(points[members[a]])) != side) own[count++] = members[a];
-        }
-      });
+  const bool reuse = split_sheets && searched_before != nullptr &&
+                     searched_before->searched == searched && searched_before->num_points() == n;
+  auto visit = [&](int i, const int* nearest, const double*, int found) {
+    thread_local std::vector<int> members;
+    Members(i, nearest, found, searched, &members);
+    std::copy_n(members.begin() + 1, k, graph.neighbors.data() + static_cast<size_t>(i) * k);
+    if (!split_sheets) return;
+    // The earlier split was over `nearest` as found: the same points in the same order
+    // as `members` when p_i came first.
+    const SheetSplit split =
+        reuse && nearest[0] == i
+            ? searched_before->splits[i]
+            : SplitSheets(points, members.data(), static_cast<int>(members.size()));
+    separation[i] = static_cast<float>(split.separation);
+    int* own = own_side.data() + static_cast<size_t>(i) * k;
+    if (!(split.separation > 0.0)) {  // not two parallel sides here
+      std::copy_n(members.begin() + 1, k, own);
+      return;
+    }
+    // The nearest on p_i's side, then (if fewer than k) the nearest of the other side.
+    const int side = split.Side(split.Offset(points[i]));
+    int count = 0;
+    for (size_t a = 1; a < members.size() && count < k; ++a) {
+      if (split.Side(split.Offset(points[members[a]])) == side) own[count++] = members[a];
+    }
+    for (size_t a = 1; a < members.size() && count < k; ++a) {
+      if (split.Side(split.Offset(points[members[a]])) != side) own[count++] = members[a];
+    }
+  };
+  if (reuse) {
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+    for (int i = 0; i < n; ++i) visit(i, searched_before->NearestOf(i), nullptr, searched);
+  } else {
+    const NearestNeighbors search(points);
+    search.ForEach(n, searched, num_threads, [&points](int i) { return points[i]; }, visit);
+  }
   if (split_sheets) {
     // Where the region around p_i is a thin part (sheet_split.h), N(i) is the k nearest
     // candidates on p_i's own side. The regions are judged on the unsplit N first.

@@ -61,7 +61,7 @@ void ComputeWeights(double min_squared_distance_ratio, Problem* problem) {
 }
 
 Problem BuildProblem(const PointList& input_points, const ProblemOptions& options,
-                     int num_threads) {
+                     int num_threads, const SplitSearch* searched) {
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   for (size_t i = 0; i < input_points.size(); ++i) {
@@ -80,7 +80,7 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   problem.points.reserve(input_points.size());
   for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
   problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,
-                                     options.split_sheets);
+                                     options.split_sheets, searched);
   ComputeWeights(options.min_squared_distance_ratio, &problem);
   return problem;
 }

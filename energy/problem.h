@@ -39,11 +39,12 @@ struct Problem {
   int k() const { return graph.k; }
 };
 
-// Normalizes `input_points`, builds N and M and the weights. Throws std::invalid_argument
-// with a one-line reason on invalid options, non-finite coordinates, too few points or a
-// point set without extent.
+// Normalizes `input_points`, builds N and M and the weights. `searched`, when given, is the
+// noise probe's search over these same points (BuildNeighborGraph). Throws
+// std::invalid_argument with a one-line reason on invalid options, non-finite coordinates,
+// too few points or a point set without extent.
 Problem BuildProblem(const PointList& input_points, const ProblemOptions& options,
-                     int num_threads = 1);
+                     int num_threads = 1, const SplitSearch* searched = nullptr);
 
 // The median of alpha_i (0 for an empty problem): the squared neighbourhood scale that the
 // data-derived weights and the spacing estimate are expressed in.

@@ -142,7 +142,12 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
                                                  &solved_points);
   }
   CheckFitsInMemory(static_cast<int>(solved_points.size()), problem_options.k);
-  state.problem = energy::BuildProblem(solved_points, problem_options, threads);
+  // Solved whole, the problem's points are the probe's: its search is reused.
+  const energy::SplitSearch* probe_search =
+      solved_points.size() == ordered_points.size() ? state.neighborhood.split_search.get()
+                                                    : nullptr;
+  state.problem = energy::BuildProblem(solved_points, problem_options, threads, probe_search);
+  state.neighborhood.split_search.reset();
   state.neighborhood.k = state.problem.k();
   state.setup_seconds = SecondsSince(start);
   energy::PointList ordered_normals;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cmath>
 #include <iterator>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,7 @@
 #include "energy/normalization.h"
 #include "energy/nearest_neighbors.h"
 #include "energy/sheet_split.h"
+#include "energy/split_search.h"
 #include "solvers/median.h"
 
 namespace lpd::solvers {
@@ -102,8 +104,16 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   auto point_of = [n, queries](int query) {
     return static_cast<int>(static_cast<int64_t>(query) * n / queries);
   };
+  // With every point probed, the wider searches and their splits are kept for the graph.
+  auto kept = std::make_shared<energy::SplitSearch>();
+  const bool keep = options.split_sheets && queries == n;
+  if (keep) {
+    kept->searched = searched;
+    kept->nearest.resize(static_cast<size_t>(n) * searched);
+  }
   auto probe = [&](int query, const int* nearest, const double*, int found) {
     const int i = point_of(query);
+    if (keep) std::copy_n(nearest, found, kept->nearest.data() + static_cast<size_t>(i) * searched);
     // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];
@@ -188,6 +198,10 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                  [](double r) { return std::isnan(r); }),
                   residuals.end());
   size.two_sheet_fraction = static_cast<double>(thin) / queries;
+  if (keep) {
+    kept->splits = std::move(splits);
+    size.split_search = std::move(kept);
+  }
   // 1.4826 median |residual|: sigma for Gaussian residuals (residual_statistics.h), with
   // the three degrees of freedom the fitted plane absorbs given back.
   size.noise_sigma = 1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0));

@@ -30,9 +30,11 @@
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 #define LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 
+#include <memory>
 #include <string>
 
 #include "energy/point3.h"
+#include "energy/split_search.h"
 
 namespace lpd::solvers {
 
@@ -72,6 +74,9 @@ struct NeighborhoodSize {
   double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
+  // With split_sheets and every point probed (at most 131,072 points): each point's wider
+  // search and its split, for BuildProblem to reuse on the same points; else null.
+  std::shared_ptr<const energy::SplitSearch> split_search;
 };
 
 // Throws std::invalid_argument (as energy::BuildProblem) when most points coincide with their

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "energy/normalization.h"
+#include "energy/problem.h"
 #include "experiments/shapes/poisson_disk_sampling.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "test_problems.h"
@@ -84,6 +85,37 @@ TEST(NeighborhoodSize, StaysWithinItsBoundsAndRefusesTooFewPoints) {
   EXPECT_EQ(ChooseNeighborhoodSize(testing::NoisyPlane(5000, 0.05, 4), options, 1).k, 30);
   EXPECT_THROW(ChooseNeighborhoodSize(testing::NoisyPlane(options.min_k, 0.01, 4), options, 1),
                std::invalid_argument);
+}
+
+// The probe keeps its wider searches and splits; a graph built from them is the graph built
+// by searching again: on two sheets 4 noise deviations apart (thin regions, split), with a few
+// duplicated points (whose search need not find themselves first), for a k whose split search
+// is the probe's (2k + 1 <= 128) and one whose is wider (not reused).
+TEST(NeighborhoodSize, TheGraphFromTheProbesSearchIsTheGraphSearchedAgain) {
+  const experiments::ProceduralShape sheets =
+      experiments::MakeShape(experiments::ParseShapeSpec("sheets:size=1,gap=0.02"));
+  energy::PointList points =
+      experiments::PoissonDiskSample(sheets, 6000, /*seed=*/5).points;
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> normal(0.0, 0.005);
+  for (energy::Point3& p : points) p += energy::Point3(normal(rng), normal(rng), normal(rng));
+  for (int i = 0; i < 40; ++i) points.push_back(points[i * 97]);
+  const NeighborhoodSize size = ChooseNeighborhoodSize(points, NeighborhoodSizeOptions(), 2);
+  ASSERT_NE(size.split_search, nullptr);
+  EXPECT_EQ(size.split_search->num_points(), static_cast<int>(points.size()));
+  EXPECT_GT(size.two_sheet_fraction, 0.5);
+  for (const int k : {20, 63, 70}) {
+    energy::ProblemOptions options;
+    options.k = k;
+    const energy::Problem searched = energy::BuildProblem(points, options, 2);
+    const energy::Problem reused =
+        energy::BuildProblem(points, options, 2, size.split_search.get());
+    EXPECT_EQ(reused.graph.neighbors, searched.graph.neighbors) << "k " << k;
+    EXPECT_EQ(reused.graph.pairs, searched.graph.pairs) << "k " << k;
+  }
+  NeighborhoodSizeOptions unsplit;
+  unsplit.split_sheets = false;
+  EXPECT_EQ(ChooseNeighborhoodSize(points, unsplit, 2).split_search, nullptr);
 }
 
 }  // namespace

@@ -1,0 +1,32 @@
+// lpd: the wider neighbourhoods the sheet split is judged on, searched once.
+//
+// The noise probe (solvers/neighborhood_size.h) searches the kSheetSplitPoints nearest of
+// every point and splits each such neighbourhood (sheet_split.h); BuildNeighborGraph needs the
+// same search and splits whenever 2k + 1 <= kSheetSplitPoints. Kept from the probe, they spare
+// the graph a second k-d tree search over the same points.
+#ifndef LPD_ENERGY_SPLIT_SEARCH_H_
+#define LPD_ENERGY_SPLIT_SEARCH_H_
+
+#include <vector>
+
+#include "energy/sheet_split.h"
+
+namespace lpd::energy {
+
+struct SplitSearch {
+  // Points searched around each point, the point itself included (it is usually first).
+  int searched = 0;
+  // nearest[i * searched + a]: the a-th nearest of point i (NearestNeighbors order).
+  std::vector<int> nearest;
+  // splits[i] = SplitSheets over nearest[i * searched, (i + 1) * searched).
+  std::vector<SheetSplit> splits;
+
+  int num_points() const { return searched > 0 ? static_cast<int>(splits.size()) : 0; }
+  const int* NearestOf(int i) const {
+    return nearest.data() + static_cast<size_t>(i) * searched;
+  }
+};
+
+}  // namespace lpd::energy
+
+#endif  // LPD_ENERGY_SPLIT_SEARCH_H_
