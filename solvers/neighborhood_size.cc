@@ -105,15 +105,15 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     return static_cast<int>(static_cast<int64_t>(query) * n / queries);
   };
   // With every point probed, the wider searches and their splits are kept for the graph.
-  auto kept = std::make_shared<energy::SplitSearch>();
-  const bool keep = options.split_sheets && queries == n;
-  if (keep) {
+  std::shared_ptr<energy::SplitSearch> kept;
+  if (options.split_sheets && queries == n) {
+    kept = std::make_shared<energy::SplitSearch>();
     kept->searched = searched;
     kept->nearest.resize(static_cast<size_t>(n) * searched);
   }
   auto probe = [&](int query, const int* nearest, const double*, int found) {
     const int i = point_of(query);
-    if (keep) std::copy_n(nearest, found, kept->nearest.data() + static_cast<size_t>(i) * searched);
+    if (kept) std::copy_n(nearest, found, kept->nearest.data() + static_cast<size_t>(i) * searched);
     // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];
@@ -198,7 +198,7 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                  [](double r) { return std::isnan(r); }),
                   residuals.end());
   size.two_sheet_fraction = static_cast<double>(thin) / queries;
-  if (keep) {
+  if (kept) {
     kept->splits = std::move(splits);
     size.split_search = std::move(kept);
   }
