@@ -27,7 +27,8 @@ void Members(int i, const int* nearest, int found, int wanted, std::vector<int>*
 }  // namespace
 
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
-                                 bool split_sheets, const SplitSearch* searched_before) {
+                                 bool split_sheets, const SplitSearch* searched_before,
+                                 bool grow_thin_regions) {
   if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
   const int n = static_cast<int>(points.size());
   if (n < k + 1) {
@@ -83,11 +84,31 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   if (split_sheets) {
     // Where the region around p_i is a thin part (sheet_split.h), N(i) is the k nearest
     // candidates on p_i's own side. The regions are judged on the unsplit N first.
+    std::vector<double> region(n);
+    std::vector<char> is_thin(n, 0);
     std::vector<int> thin;
     for (int i = 0; i < n; ++i) {
       double sum = separation[i];
       for (int a = 0; a < k; ++a) sum += separation[graph.NeighborsOf(i)[a]];
-      if (sum / (k + 1) > kThinRegionSeparation) thin.push_back(i);
+      region[i] = sum / (k + 1);
+      if (region[i] > kThinRegionSeparation) {
+        is_thin[i] = 1;
+        thin.push_back(i);
+      }
+    }
+    // Growth, in index order until nothing joins: p_i joins when its region passes the lower
+    // bar and a point of its N(i) is thin.
+    for (bool joined = grow_thin_regions && !thin.empty(); joined;) {
+      joined = false;
+      for (int i = 0; i < n; ++i) {
+        if (is_thin[i] || !(region[i] > kThinRegionGrowthSeparation)) continue;
+        const int* neighbors = graph.NeighborsOf(i);
+        if (std::any_of(neighbors, neighbors + k, [&](int j) { return is_thin[j] != 0; })) {
+          is_thin[i] = 1;
+          thin.push_back(i);
+          joined = true;
+        }
+      }
     }
     for (int i : thin) {
       std::copy_n(own_side.data() + static_cast<size_t>(i) * k, k,

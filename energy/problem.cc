@@ -80,7 +80,8 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   problem.points.reserve(input_points.size());
   for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
   problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,
-                                     options.split_sheets, searched);
+                                     options.split_sheets, searched,
+                                     options.grow_thin_regions);
   ComputeWeights(options.min_squared_distance_ratio, &problem);
   return problem;
 }

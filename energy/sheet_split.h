@@ -18,6 +18,14 @@
 // kThinRegionSeparation. That mean has medians 2.75-2.93 and 99th percentiles 3.0-3.4 on
 // one sheet (sphere, beetle, lilium, FANDISK and JOINT samples; the top on sharp edges),
 // 3.9-5.1 on plates and sheets 4-8 noise deviations apart (docs/method.md).
+//
+// Sides about 3 deviations apart pass kThinRegionSeparation in a few regions only, but the
+// region means of their whole part sit above one sheet's (medians 2.97-3.20 against
+// 2.71-2.87). Where a split region is found, it may therefore grow through the neighbouring
+// regions whose mean passes kThinRegionGrowthSeparation (3.0, one sheet's 99th percentile at
+// noise as wide as the spacing). At narrower noise the 128-point regions span more than
+// sqrt(128 / pi) = 6.4 noise deviations, curved parts split as well as two sides do, and the
+// regions do not grow (NeighborGraphOptions).
 #ifndef LPD_ENERGY_SHEET_SPLIT_H_
 #define LPD_ENERGY_SHEET_SPLIT_H_
 
@@ -35,6 +43,7 @@ constexpr int kSheetSplitPoints = 128;
 constexpr double kMaxSheetAngleDegrees = 25.0;
 constexpr int kMinPointsForNormal = 24;  // in each run, for the angle test
 constexpr double kThinRegionSeparation = 3.3;
+constexpr double kThinRegionGrowthSeparation = 3.0;
 
 struct SheetSplit {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // of the least-squares plane
