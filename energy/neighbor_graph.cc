@@ -28,7 +28,7 @@ void Members(int i, const int* nearest, int found, int wanted, std::vector<int>*
 
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
                                  bool split_sheets, const SplitSearch* searched_before,
-                                 bool grow_thin_regions) {
+                                 ThinRegionGrowth growth) {
   if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
   const int n = static_cast<int>(points.size());
   if (n < k + 1) {
@@ -98,7 +98,11 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     }
     // Growth, in index order until nothing joins: p_i joins when its region passes the lower
     // bar and a point of its N(i) is thin.
-    for (bool joined = grow_thin_regions && !thin.empty(); joined;) {
+    const bool grow =
+        !thin.empty() && (growth == ThinRegionGrowth::kEverywhere ||
+                          (growth == ThinRegionGrowth::kWhereCommon &&
+                           thin.size() >= kThinGrowthSeedShare * n));
+    for (bool joined = grow; joined;) {
       joined = false;
       for (int i = 0; i < n; ++i) {
         if (is_thin[i] || !(region[i] > kThinRegionGrowthSeparation)) continue;

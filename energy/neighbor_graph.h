@@ -37,18 +37,22 @@ struct NeighborGraph {
   }
 };
 
+// Where the thin regions of a split graph grow through their neighbours whose regions pass
+// kThinRegionGrowthSeparation (sheet_split.h): nowhere, where the split regions are
+// kThinGrowthSeedShare of the points or more, or wherever there is one.
+enum class ThinRegionGrowth { kNone, kWhereCommon, kEverywhere };
+
 // Builds N and M for `points` with a k-d tree (nanoflann), using `num_threads` threads.
 // With `split_sheets`, N(i) is the k nearest of the 2k nearest on p_i's own side where they
 // lie on two sheets of a thin part (sheet_split.h), so that a fit does not average the two
-// sides; with `grow_thin_regions` as well, the thin regions grow through their neighbours
-// whose regions pass kThinRegionGrowthSeparation (sheet_split.h). `searched`, when given, must
+// sides, the thin regions grown as `growth` says. `searched`, when given, must
 // come from a search over these same points; where it searched as many points as the split
 // needs, the graph takes its lists and splits instead of searching again (same result).
 // Requires points.size() >= k + 1 and k >= 1; throws std::invalid_argument otherwise.
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
                                  bool split_sheets = false,
                                  const SplitSearch* searched = nullptr,
-                                 bool grow_thin_regions = false);
+                                 ThinRegionGrowth growth = ThinRegionGrowth::kWhereCommon);
 
 // Builds M and the incidence lists from already filled `graph.k` and `graph.neighbors`.
 void BuildPairs(NeighborGraph* graph);

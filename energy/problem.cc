@@ -81,7 +81,7 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
   problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,
                                      options.split_sheets, searched,
-                                     options.grow_thin_regions);
+                                     options.thin_region_growth);
   ComputeWeights(options.min_squared_distance_ratio, &problem);
   return problem;
 }

@@ -25,9 +25,9 @@ struct ProblemOptions {
   double min_squared_distance_ratio = 1e-4;
   // N(i) from p_i's own side of a thin part (BuildNeighborGraph; paper: false).
   bool split_sheets = true;
-  // Thin regions grow through neighbouring regions just below the split's bar
-  // (BuildNeighborGraph); StartDenoising sets it where the noise is as wide as the spacing.
-  bool grow_thin_regions = false;
+  // How far thin regions grow (BuildNeighborGraph); StartDenoising makes it kEverywhere
+  // where the noise is as wide as the spacing.
+  ThinRegionGrowth thin_region_growth = ThinRegionGrowth::kWhereCommon;
   bool IsValid(std::string* error) const;
 };
 

@@ -138,10 +138,11 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
     Thinning thinning = ChooseThinning(ordered_points, options.ProbeOptions(), threads);
     state.neighborhood = thinning.size;
     problem_options.k = state.neighborhood.k;
-    // Thin regions grow where the noise is as wide as the spacing (energy/sheet_split.h).
-    problem_options.grow_thin_regions =
-        problem_options.split_sheets &&
-        state.neighborhood.noise_sigma >= state.neighborhood.spacing;
+    // Thin regions grow wherever found where the noise is as wide as the spacing
+    // (energy/sheet_split.h).
+    if (state.neighborhood.noise_sigma >= state.neighborhood.spacing) {
+      problem_options.thin_region_growth = energy::ThinRegionGrowth::kEverywhere;
+    }
     if (!thinning.rows.empty()) SplitOffUnsolved(thinning.rows, ordered_points, &state,
                                                  &solved_points);
   }

@@ -73,10 +73,10 @@ TEST(ThinParts, SidesThreeDeviationsApartStayApartWhereTheNoiseIsAsWideAsTheSpac
   for (const energy::Point3& p : sheets.points) normalized.push_back(frame.ToNormalized(p));
   const NeighborhoodSize size = ChooseNeighborhoodSize(sheets.points, {}, 2);
   ASSERT_GE(size.noise_sigma, size.spacing);
-  const auto own_side_fraction = [&](bool grow) {
+  const auto own_side_fraction = [&](energy::ThinRegionGrowth growth) {
     const energy::NeighborGraph plain = energy::BuildNeighborGraph(normalized, size.k, 2);
     const energy::NeighborGraph split =
-        energy::BuildNeighborGraph(normalized, size.k, 2, true, nullptr, grow);
+        energy::BuildNeighborGraph(normalized, size.k, 2, true, nullptr, growth);
     int changed = 0;
     for (int i = 0; i < plain.num_points(); ++i) {
       changed += !std::equal(plain.NeighborsOf(i), plain.NeighborsOf(i) + size.k,
@@ -84,8 +84,38 @@ TEST(ThinParts, SidesThreeDeviationsApartStayApartWhereTheNoiseIsAsWideAsTheSpac
     }
     return static_cast<double>(changed) / plain.num_points();
   };
-  EXPECT_GT(own_side_fraction(true), 0.8);
-  EXPECT_LT(own_side_fraction(false), 0.5);
+  EXPECT_GT(own_side_fraction(energy::ThinRegionGrowth::kEverywhere), 0.8);
+  EXPECT_LT(own_side_fraction(energy::ThinRegionGrowth::kNone), 0.5);
+}
+
+// Noise narrower than the spacing: the split regions grow where they are common (two sheets
+// 3.2 noise deviations apart: a tenth of the points or more).
+TEST(ThinParts, AtNarrowNoiseThinRegionsGrowWhereTheyAreCommon) {
+  const auto graphs_differ = [](const energy::PointList& points, int k,
+                                energy::ThinRegionGrowth growth) {
+    const energy::Frame frame = energy::ComputeNormalizingFrame(points);
+    energy::PointList normalized;
+    for (const energy::Point3& p : points) normalized.push_back(frame.ToNormalized(p));
+    const energy::NeighborGraph none = energy::BuildNeighborGraph(
+        normalized, k, 2, true, nullptr, energy::ThinRegionGrowth::kNone);
+    const energy::NeighborGraph grown =
+        energy::BuildNeighborGraph(normalized, k, 2, true, nullptr, growth);
+    int differ = 0;
+    for (int i = 0; i < none.num_points(); ++i) {
+      differ += !std::equal(none.NeighborsOf(i), none.NeighborsOf(i) + k, grown.NeighborsOf(i));
+    }
+    return static_cast<double>(differ) / none.num_points();
+  };
+  const NoisyShape sheets = Noisy("sheets:size=1,gap=0.032", 10000, 0.01);
+  const NeighborhoodSize size = ChooseNeighborhoodSize(sheets.points, {}, 2);
+  ASSERT_LT(size.noise_sigma, size.spacing);
+  EXPECT_GT(graphs_differ(sheets.points, size.k, energy::ThinRegionGrowth::kWhereCommon), 0.05);
+  EXPECT_EQ(graphs_differ(sheets.points, size.k, energy::ThinRegionGrowth::kWhereCommon),
+            graphs_differ(sheets.points, size.k, energy::ThinRegionGrowth::kEverywhere));
+  // A sphere has no split region to grow from.
+  const NoisyShape sphere = Noisy("sphere", 8000, 0.004);
+  const int k = ChooseNeighborhoodSize(sphere.points, {}, 2).k;
+  EXPECT_EQ(graphs_differ(sphere.points, k, energy::ThinRegionGrowth::kEverywhere), 0.0);
 }
 
 TEST(ThinParts, TheProbeReadsOneSidesNoiseOnAPlate) {
