@@ -86,35 +86,30 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     // candidates on p_i's own side. The regions are judged on the unsplit N first.
     std::vector<double> region(n);
     std::vector<char> is_thin(n, 0);
-    std::vector<int> thin;
+    size_t seeds = 0;
     for (int i = 0; i < n; ++i) {
       double sum = separation[i];
       for (int a = 0; a < k; ++a) sum += separation[graph.NeighborsOf(i)[a]];
       region[i] = sum / (k + 1);
-      if (region[i] > kThinRegionSeparation) {
-        is_thin[i] = 1;
-        thin.push_back(i);
-      }
+      is_thin[i] = region[i] > kThinRegionSeparation;
+      seeds += is_thin[i];
     }
     // Growth, in index order until nothing joins: p_i joins when its region passes the lower
     // bar and a point of its N(i) is thin.
-    const bool grow =
-        !thin.empty() && (growth == ThinRegionGrowth::kEverywhere ||
-                          (growth == ThinRegionGrowth::kWhereCommon &&
-                           thin.size() >= kThinGrowthSeedShare * n));
+    const bool grow = seeds > 0 && (growth == ThinRegionGrowth::kEverywhere ||
+                                    (growth == ThinRegionGrowth::kWhereCommon &&
+                                     seeds >= kThinGrowthSeedShare * n));
     for (bool joined = grow; joined;) {
       joined = false;
       for (int i = 0; i < n; ++i) {
         if (is_thin[i] || !(region[i] > kThinRegionGrowthSeparation)) continue;
         const int* neighbors = graph.NeighborsOf(i);
-        if (std::any_of(neighbors, neighbors + k, [&](int j) { return is_thin[j] != 0; })) {
-          is_thin[i] = 1;
-          thin.push_back(i);
-          joined = true;
-        }
+        is_thin[i] = std::any_of(neighbors, neighbors + k, [&](int j) { return is_thin[j]; });
+        joined |= is_thin[i] != 0;
       }
     }
-    for (int i : thin) {
+    for (int i = 0; i < n; ++i) {
+      if (!is_thin[i]) continue;
       std::copy_n(own_side.data() + static_cast<size_t>(i) * k, k,
                   graph.neighbors.data() + static_cast<size_t>(i) * k);
     }
