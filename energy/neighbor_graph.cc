@@ -41,7 +41,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   graph.neighbors.resize(static_cast<size_t>(n) * k);
   const int searched =
       split_sheets ? std::min(n, std::max(2 * k + 1, kSheetSplitPoints)) : k + 1;
-  std::vector<float> separation(split_sheets ? n : 0);
+  std::vector<float> separation(split_sheets ? n : 0), within_kurtosis(split_sheets ? n : 0);
   // With split_sheets, each point's k nearest candidates on its own side, in case its region
   // turns out thin (found in the same search, so that a thin region needs no second one).
   std::vector<int> own_side(split_sheets ? static_cast<size_t>(n) * k : 0);
@@ -59,6 +59,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
             ? searched_before->splits[i]
             : SplitSheets(points, members.data(), static_cast<int>(members.size()));
     separation[i] = static_cast<float>(split.separation);
+    within_kurtosis[i] = static_cast<float>(split.within_kurtosis);
     int* own = own_side.data() + static_cast<size_t>(i) * k;
     if (!(split.separation > 0.0)) {  // not two parallel sides here
       std::copy_n(members.begin() + 1, k, own);
@@ -84,14 +85,17 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   if (split_sheets) {
     // Where the region around p_i is a thin part (sheet_split.h), N(i) is the k nearest
     // candidates on p_i's own side. The regions are judged on the unsplit N first.
-    std::vector<double> region(n);
-    std::vector<char> is_thin(n, 0);
+    std::vector<char> is_thin(n, 0), may_grow(n, 0);
     size_t seeds = 0;
     for (int i = 0; i < n; ++i) {
-      double sum = separation[i];
-      for (int a = 0; a < k; ++a) sum += separation[graph.NeighborsOf(i)[a]];
-      region[i] = sum / (k + 1);
-      is_thin[i] = region[i] > kThinRegionSeparation;
+      RegionSplits region;
+      region.Add(separation[i], within_kurtosis[i]);
+      for (int a = 0; a < k; ++a) {
+        const int j = graph.NeighborsOf(i)[a];
+        region.Add(separation[j], within_kurtosis[j]);
+      }
+      is_thin[i] = region.TwoSides(kThinRegionSeparation);
+      may_grow[i] = region.TwoSides(kThinRegionGrowthSeparation);
       seeds += is_thin[i];
     }
     // Growth, in index order until nothing joins: p_i joins when its region passes the lower
@@ -102,7 +106,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     for (bool joined = grow; joined;) {
       joined = false;
       for (int i = 0; i < n; ++i) {
-        if (is_thin[i] || !(region[i] > kThinRegionGrowthSeparation)) continue;
+        if (is_thin[i] || !may_grow[i]) continue;
         const int* neighbors = graph.NeighborsOf(i);
         is_thin[i] = std::any_of(neighbors, neighbors + k, [&](int j) { return is_thin[j]; });
         joined |= is_thin[i] != 0;

@@ -76,6 +76,12 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   split.lower_mean = lower / best_size;
   split.upper_mean = (sum - lower) / (count - best_size);
   const double within_deviation = std::sqrt(best / (count - 2));
+  double fourth = 0.0;
+  for (double o : offsets) {
+    const double r = o - (split.Side(o) == 0 ? split.lower_mean : split.upper_mean);
+    fourth += r * r * r * r;
+  }
+  split.within_kurtosis = fourth * count / (best * best);
   // Two sides of a thin part are parallel; the two faces of a sharp edge are not. (A run of
   // few points has no reliable normal: the other side's cap near a thin part's rim.)
   if (std::min(best_size, count - best_size) >= kMinPointsForNormal) {

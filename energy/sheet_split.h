@@ -28,6 +28,16 @@
 // (2.1-2.9% of the points of the paper's CAD inputs at their lower noise), so there the
 // regions grow only where the split ones are kThinGrowthSeedShare of the points or more (a
 // thin-walled part: 11-96% on hollow boxes, tubes and plates; docs/method.md).
+//
+// Noise with a flat top (uniform across a slab, as from coarse depth quantization) also
+// splits far apart: the halves of a uniform slab have separation sqrt(12) = 3.46, above
+// kThinRegionSeparation, and a plane with such noise came out as two layers. Two sides are
+// told from it by the shape of each run: the offsets from their own run's mean have kurtosis
+// 1.8 in the halves of a uniform slab, about 3 on well-apart sides and 2.4-2.7 on sides 3-4
+// noise deviations apart, whose runs the split truncates. So a region counts as two sides
+// only where its neighbourhoods' mean within-run kurtosis also passes
+// kMinTwoSidesKurtosis (region means: 1.83-2.07 on a uniform slab, 2.30-2.96 on plates and
+// sheets 2.8-4 noise deviations apart, 2.3 and up on the layered tool scan; docs/method.md).
 #ifndef LPD_ENERGY_SHEET_SPLIT_H_
 #define LPD_ENERGY_SHEET_SPLIT_H_
 
@@ -47,6 +57,7 @@ constexpr int kMinPointsForNormal = 24;  // in each run, for the angle test
 constexpr double kThinRegionSeparation = 3.3;
 constexpr double kThinRegionGrowthSeparation = 3.0;
 constexpr double kThinGrowthSeedShare = 0.1;
+constexpr double kMinTwoSidesKurtosis = 2.2;
 
 struct SheetSplit {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // of the least-squares plane
@@ -55,6 +66,8 @@ struct SheetSplit {
   double threshold = 0.0;   // offsets below it form the lower run
   double lower_mean = 0.0;
   double upper_mean = 0.0;
+  // Of the offsets from their own run's mean: E[r^4] / E[r^2]^2 (3 where not split).
+  double within_kurtosis = 3.0;
 
   double Offset(const Point3& p) const { return normal.dot(p - mean); }
   // The run of an offset: 0 lower, 1 upper.
@@ -68,6 +81,27 @@ struct SheetSplit {
 
 // The split of points[members[0 .. count)] (count >= 2 kMinSheetPoints, else separation 0).
 SheetSplit SplitSheets(const PointList& points, const int* members, int count);
+
+// The evidence for two sides over a region: its neighbourhoods' splits, averaged.
+class RegionSplits {
+ public:
+  void Add(const SheetSplit& split) { Add(split.separation, split.within_kurtosis); }
+  void Add(double separation, double within_kurtosis) {
+    separation_sum_ += separation;
+    kurtosis_sum_ += within_kurtosis;
+    ++count_;
+  }
+  // The mean separation passes `bar` and the runs are not the halves of a flat-topped noise.
+  bool TwoSides(double bar) const {
+    return count_ > 0 && separation_sum_ > bar * count_ &&
+           kurtosis_sum_ > kMinTwoSidesKurtosis * count_;
+  }
+
+ private:
+  double separation_sum_ = 0.0;
+  double kurtosis_sum_ = 0.0;
+  int count_ = 0;
+};
 
 }  // namespace lpd::energy
 

@@ -140,8 +140,8 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
       probe);
   NeighborhoodSize size;
   // Where a part is thinner than the neighbourhood, its two sides are measured each from its
-  // own side's mean (energy/sheet_split.h): a probe counts as split when the mean separation
-  // over it and the probed points among its probe_k nearest passes kThinRegionSeparation.
+  // own side's mean (energy/sheet_split.h): a probe counts as split when the splits over it
+  // and the probed points among its probe_k nearest show two sides (RegionSplits::TwoSides).
   std::vector<int> query_of(options.split_sheets ? n : 0, -1);
   for (int query = 0; query < queries && options.split_sheets; ++query) {
     query_of[point_of(query)] = query;
@@ -151,15 +151,12 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
 #pragma omp parallel for schedule(static) num_threads(num_threads) reduction(+ : thin)
   for (int query = 0; query < queries; ++query) {
     const size_t row = static_cast<size_t>(query) * (k + 1);
-    double separation = 0.0;
-    int count = 0;
+    energy::RegionSplits region;
     for (int a = 0; a <= k && options.split_sheets; ++a) {
       const int other = query_of[members[row + a]];
-      if (other < 0) continue;
-      separation += splits[other].separation;
-      ++count;
+      if (other >= 0) region.Add(splits[other]);
     }
-    const bool two_sheets = count > 0 && separation > energy::kThinRegionSeparation * count;
+    const bool two_sheets = region.TwoSides(energy::kThinRegionSeparation);
     thin += two_sheets;
     if (!two_sheets) {
       for (int a = 0; a <= k; ++a) residuals[row + a] = std::abs(offsets[row + a]);

@@ -3,6 +3,7 @@
 #include "energy/sheet_split.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -66,6 +67,46 @@ TEST(SheetSplit, OneSheetStaysUnderTheRegionThresholdOnAverage) {
   // One Gaussian sheet's split separates its runs by about 2.7 within-run deviations.
   EXPECT_LT(sum / 200, 3.0);
   EXPECT_GT(sum / 200, 2.4);
+}
+
+// `count` points on [0, 0.2]^2 with heights uniform in [0, height).
+PointList Slab(int count, double height, std::mt19937_64* random) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  PointList slab;
+  for (int i = 0; i < count; ++i) {
+    slab.emplace_back(0.2 * uniform(*random), 0.2 * uniform(*random), height * uniform(*random));
+  }
+  return slab;
+}
+
+TEST(SheetSplit, WithinRunKurtosisTellsAFlatToppedSlabFromTwoSides) {
+  // Noise uniform across a slab: the split halves it (separation sqrt(12) = 3.46 in the
+  // limit, past the region bar) into two uniform runs, of kurtosis 9/5 in the limit.
+  std::mt19937_64 random(11);
+  const std::vector<int> many = All(4000);
+  const SheetSplit large = SplitSheets(Slab(4000, 0.03, &random), many.data(), 4000);
+  EXPECT_NEAR(large.separation, std::sqrt(12.0), 0.05);
+  EXPECT_NEAR(large.within_kurtosis, 1.8, 0.05);
+  // At 128 points the fitted plane's tilt adds a little (mean 1.92 seen).
+  const std::vector<int> members = All(128);
+  double slab_separation = 0.0, slab_kurtosis = 0.0, sides_kurtosis = 0.0;
+  const int draws = 200;
+  for (int draw = 0; draw < draws; ++draw) {
+    const SheetSplit split = SplitSheets(Slab(128, 0.03, &random), members.data(), 128);
+    slab_separation += split.separation / draws;
+    slab_kurtosis += split.within_kurtosis / draws;
+    sides_kurtosis +=
+        SplitSheets(Sheets(128, 0.06, 0.01, 0.5, draw + 1), members.data(), 128).within_kurtosis /
+        draws;
+  }
+  // Two Gaussian sides 6 deviations apart: runs of nearly Gaussian offsets (kurtosis 3).
+  EXPECT_NEAR(sides_kurtosis, 3.0, 0.3);
+  RegionSplits slab_region, sides_region;
+  slab_region.Add(slab_separation, slab_kurtosis);
+  sides_region.Add(6.0, sides_kurtosis);
+  EXPECT_GT(slab_separation, kThinRegionSeparation);
+  EXPECT_FALSE(slab_region.TwoSides(kThinRegionSeparation));
+  EXPECT_TRUE(sides_region.TwoSides(kThinRegionSeparation));
 }
 
 TEST(SheetSplit, TooFewPointsAreNeverSplit) {
