@@ -37,7 +37,9 @@
 // noise deviations apart, whose runs the split truncates. So a region counts as two sides
 // only where its neighbourhoods' mean within-run kurtosis also passes
 // kMinTwoSidesKurtosis (region means: 1.83-2.07 on a uniform slab, 2.30-2.96 on plates and
-// sheets 2.8-4 noise deviations apart, 2.3 and up on the layered tool scan; docs/method.md).
+// sheets 2.8-4 noise deviations apart, 2.3 and up on the layered tool scan; docs/method.md),
+// or where its mean separation passes kClearSidesSeparation, which no slab reaches (its
+// region means: at most 3.9-4.0): sides with flat-topped noise and a gap between them.
 #ifndef LPD_ENERGY_SHEET_SPLIT_H_
 #define LPD_ENERGY_SHEET_SPLIT_H_
 
@@ -58,6 +60,7 @@ constexpr double kThinRegionSeparation = 3.3;
 constexpr double kThinRegionGrowthSeparation = 3.0;
 constexpr double kThinGrowthSeedShare = 0.1;
 constexpr double kMinTwoSidesKurtosis = 2.2;
+constexpr double kClearSidesSeparation = 4.5;
 
 struct SheetSplit {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // of the least-squares plane
@@ -91,10 +94,12 @@ class RegionSplits {
     kurtosis_sum_ += within_kurtosis;
     ++count_;
   }
-  // The mean separation passes `bar` and the runs are not the halves of a flat-topped noise.
+  // The mean separation passes `bar`, and the runs are not the halves of a flat-topped noise
+  // or are too far apart to be.
   bool TwoSides(double bar) const {
     return count_ > 0 && separation_sum_ > bar * count_ &&
-           kurtosis_sum_ > kMinTwoSidesKurtosis * count_;
+           (kurtosis_sum_ > kMinTwoSidesKurtosis * count_ ||
+            separation_sum_ > kClearSidesSeparation * count_);
   }
 
  private:

@@ -107,6 +107,11 @@ TEST(SheetSplit, WithinRunKurtosisTellsAFlatToppedSlabFromTwoSides) {
   EXPECT_GT(slab_separation, kThinRegionSeparation);
   EXPECT_FALSE(slab_region.TwoSides(kThinRegionSeparation));
   EXPECT_TRUE(sides_region.TwoSides(kThinRegionSeparation));
+  // Two slabs with a gap between them: flat-topped runs, but farther apart than a slab's.
+  RegionSplits slabs_apart;
+  slabs_apart.Add(kClearSidesSeparation + 0.5, slab_kurtosis);
+  EXPECT_TRUE(slabs_apart.TwoSides(kThinRegionSeparation));
+  EXPECT_LT(slab_separation, kClearSidesSeparation - 0.5);
 }
 
 TEST(SheetSplit, TooFewPointsAreNeverSplit) {
