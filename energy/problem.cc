@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "energy/coordinate_quantization.h"
+
 namespace lpd::energy {
 
 bool ProblemOptions::IsValid(std::string* error) const {
@@ -77,6 +79,7 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   }
   Problem problem;
   problem.frame = ComputeNormalizingFrame(input_points);
+  problem.quantization_noise = QuantizationNoise(input_points) / problem.frame.scale;
   problem.points.reserve(input_points.size());
   for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
   problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,

@@ -37,6 +37,9 @@ struct Problem {
   NeighborGraph graph;    // N and M
   std::vector<double> alpha;  // alpha_i, one per point
   std::vector<double> beta;   // beta_ij, one per pair of M (graph.pairs order)
+  // The rounding noise of the input's coordinate grid, normalized: the floor of every
+  // residual scale (energy/coordinate_quantization.h).
+  double quantization_noise = 0.0;
 
   int num_points() const { return static_cast<int>(points.size()); }
   int k() const { return graph.k; }

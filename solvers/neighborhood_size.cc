@@ -12,6 +12,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "energy/coordinate_quantization.h"
 #include "energy/normalization.h"
 #include "energy/nearest_neighbors.h"
 #include "energy/sheet_split.h"
@@ -201,7 +202,8 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   }
   // 1.4826 median |residual|: sigma for Gaussian residuals (residual_statistics.h), with
   // the three degrees of freedom the fitted plane absorbs given back.
-  size.noise_sigma = 1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0));
+  size.noise_sigma = std::max(1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0)),
+                             energy::QuantizationNoise(points) / frame.scale);
   size.spacing = std::sqrt(2.0 * M_PI * Median(&alpha) / k);
   if (!(size.spacing > 0.0)) {
     throw std::invalid_argument(

@@ -56,7 +56,7 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
   }
   const auto middle = magnitudes.begin() + magnitudes.size() / 2;
   std::nth_element(magnitudes.begin(), middle, magnitudes.end());
-  return 1.4826 * *middle;
+  return std::max(1.4826 * *middle, problem.quantization_noise);
 }
 
 double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,

@@ -23,6 +23,7 @@ double MaxSquaredSmoothnessResidual(const energy::Problem& problem, const energy
 // to k + 1 points absorbs three degrees of freedom, and with noise comparable to the sample
 // spacing the k-NN search favours neighbours near p_i's own offset, so the estimate runs
 // low (about 0.9 sigma at sigma = spacing); the multiple c in mu_l = (c sigma)^2 absorbs it.
+// Never below the coordinate grid's rounding noise (problem.quantization_noise).
 double RobustFittingResidualScale(const energy::Problem& problem, const energy::Variables& v);
 
 // mu_l = (c sigma)^2 with sigma = RobustFittingResidualScale (the scale-aware mu_l), kept
