@@ -30,6 +30,11 @@ double MedianAlpha(const Problem& problem) {
   return *middle;
 }
 
+double SampleSpacing(const Problem& problem) {
+  if (problem.k() <= 0) return 0.0;
+  return std::sqrt(2.0 * M_PI * MedianAlpha(problem) / problem.k());
+}
+
 void ComputeWeights(double min_squared_distance_ratio, Problem* problem) {
   const int n = problem->num_points();
   const int k = problem->k();

@@ -61,7 +61,9 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
 
 double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,
                       double noise_sigmas) {
-  const double scale = noise_sigmas * RobustFittingResidualScale(problem, v);
+  const double sigma = std::max(RobustFittingResidualScale(problem, v),
+                                kMinMuLNoiseSpacings * energy::SampleSpacing(problem));
+  const double scale = noise_sigmas * sigma;
   return std::max(scale * scale, std::numeric_limits<double>::min());
 }
 
