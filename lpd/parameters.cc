@@ -223,7 +223,9 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
           {kEnergy,
            "selectivity of the fitting line processes, a squared distance in the frame "
            "normalized to diagonal 1",
-           "(mu_l_noise_sigmas x the noise estimate)^2", "5e-9"},
+           "(mu_l_noise_sigmas x the noise estimate)^2, the estimate at least a tenth of the "
+           "spacing",
+           "5e-9"},
           [](O& o) -> double& { return o.settings.energy.mu_l; },
           [](O& o) -> double& { return o.settings.mu_l_noise_sigmas; }),
       Number("mu_m", kBoth,

@@ -31,7 +31,8 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
 // and a mu_l set from their median flags curved parts and edges as outliers (noise-free
 // samples of cad_part lost 20-37% of their points, of the bunny 3.9%). At a tenth of the
 // spacing noise-free and low-noise samples are flagged at the rate noisy ones are, under 1%;
-// no noisy shared input reads lower (docs/robustness.md, "Noise-free input").
+// the shared noisy models read higher, the real scan 0.097 (docs/robustness.md, "Noise-free
+// and low-noise input").
 constexpr double kMinMuLNoiseSpacings = 0.1;
 
 // mu_l = (c sigma)^2 with sigma = RobustFittingResidualScale (the scale-aware mu_l), sigma at
