@@ -409,6 +409,14 @@ std::vector<Parameter> FinalStepParameters() {
                "out instead of keeping the noise along the surface (0: off; 10 is measured in "
                "docs/experiments.md)"},
               [](O& o) -> int& { return o.final_step.even_spacing_rounds; }),
+      Flag("offset_feedback", kBoth,
+           {kFinal,
+            "move each output point along its normal by the mean offset of the input points "
+            "from their outputs over its 120 nearest, shrunk where it is within two standard "
+            "errors of 0 (the inward bias of wide neighbourhoods on curved parts); only where "
+            "the probe reads sigma at most 1.15 spacings",
+            "", "false"},
+           [](O& o) -> bool& { return o.final_step.offset_feedback; }),
       Number("outlier_fraction", kBoth,
              {kOutliers,
               "outlier score (1 - the support-weighted fitting line processes the planes of "

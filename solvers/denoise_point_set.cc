@@ -10,6 +10,7 @@
 #include "energy/wall_clock.h"
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
+#include "solvers/offset_feedback.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
 #include "solvers/sphere_projection.h"
@@ -232,6 +233,21 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
         continue;
       }
       result.projected[i] = problem.frame.ToInput(normalized[i] + (to - from));
+    }
+  }
+  const NeighborhoodSize& estimates = state.neighborhood;
+  if (options.final_step.offset_feedback && estimates.spacing > 0.0 &&
+      estimates.noise_sigma <= kCalibratedReadRatio * estimates.spacing) {
+    energy::PointList normalized(result.projected.size());
+    std::vector<uint8_t> movable(result.projected.size());
+    for (size_t i = 0; i < normalized.size(); ++i) {
+      normalized[i] = problem.frame.ToNormalized(result.projected[i]);
+      movable[i] = !result.indicators.is_outlier[i];
+    }
+    const energy::PointList fed_back = FeedBackMeanOffsets(
+        problem.points, normalized, result.normals, movable, options.settings.num_threads);
+    for (size_t i = 0; i < normalized.size(); ++i) {
+      result.projected[i] = problem.frame.ToInput(fed_back[i]);
     }
   }
   if (options.final_step.snap_features) {

@@ -58,6 +58,10 @@ struct FinalDenoisingOptions {
   // Rounds of repulsion between nearest output points within their tangent planes, each
   // point then following its own surface (even_spacing.h; 0: off, the default).
   int even_spacing_rounds = 0;
+  // Move each output point by its neighbourhood's mean input offset, shrunk
+  // (offset_feedback.h; paper: off). Applied where the probe read sigma / spacing at most
+  // kCalibratedReadRatio.
+  bool offset_feedback = true;
   double outlier_fraction = 0.65;        // outlier score that makes an outlier, in (0, 1]
   // Largest factor by which a plane's region noise may widen its line process (above; 1:
   // the global mu_l only, as in the paper).

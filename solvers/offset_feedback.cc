@@ -1,0 +1,57 @@
+#include "solvers/offset_feedback.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "energy/nearest_neighbors.h"
+
+namespace lpd::solvers {
+
+energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
+                                      const energy::PointList& outputs,
+                                      const energy::PointList& normals,
+                                      const std::vector<uint8_t>& movable, int num_threads) {
+  std::vector<int> rows;  // the points that take part
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    if (movable[i] && normals[i].squaredNorm() > 0.0) rows.push_back(static_cast<int>(i));
+  }
+  energy::PointList result = outputs;
+  const int count = static_cast<int>(rows.size());
+  if (count < 2) return result;
+  energy::PointList points(count);
+  std::vector<double> offset(count);
+  for (int r = 0; r < count; ++r) {
+    const int i = rows[r];
+    points[r] = outputs[i];
+    offset[r] = normals[i].dot(inputs[i] - outputs[i]);
+  }
+  const double min_cosine = std::cos(kFeedbackMaxAngleDegrees * M_PI / 180.0);
+  std::vector<double> shift(count, 0.0);
+  const energy::NearestNeighbors search(points);
+  search.ForEach(count, std::min(kFeedbackNeighbors, count), num_threads,
+                 [&points](int r) { return points[r]; },
+                 [&](int r, const int* nearest, const double*, int found) {
+                   const energy::Point3& n = normals[rows[r]];
+                   double sum = 0.0, sum_of_squares = 0.0;
+                   int used = 0;
+                   for (int a = 0; a < found; ++a) {
+                     const double cosine = n.dot(normals[rows[nearest[a]]]);
+                     if (std::abs(cosine) < min_cosine) continue;
+                     const double z = cosine > 0.0 ? offset[nearest[a]] : -offset[nearest[a]];
+                     sum += z;
+                     sum_of_squares += z * z;
+                     ++used;
+                   }
+                   if (used < 2) return;
+                   const double mean = sum / used;
+                   const double variance =
+                       std::max(0.0, (sum_of_squares - used * mean * mean) / (used - 1));
+                   const double squared_error = variance / used;
+                   if (!(mean * mean > 0.0)) return;
+                   shift[r] = mean * std::max(0.0, 1.0 - 4.0 * squared_error / (mean * mean));
+                 });
+  for (int r = 0; r < count; ++r) result[rows[r]] = outputs[rows[r]] + shift[r] * normals[rows[r]];
+  return result;
+}
+
+}  // namespace lpd::solvers

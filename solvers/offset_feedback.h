@@ -1,0 +1,43 @@
+// lpd: the input's mean offset from the output, fed back (twicing: Tukey, "Exploratory Data
+// Analysis", 1977: smooth the residuals and add them back).
+//
+// The output of a wide neighbourhood lies inside curved parts: a plane fitted over a curved
+// patch and smoothed with its neighbours sits below it by about the patch's sagitta, and
+// the sphere fitted to those planes keeps part of it (docs/method.md, "Where the error is
+// at 10K 3%"). The noise has mean zero, so the input points' mean offset from their outputs
+// measures that bias. Each output point o_i with normal n_i moves along n_i by
+//   m_i max(0, 1 - 4 v_i / m_i^2),
+// m_i the mean of n_j.(p_j - o_j) (signed to agree with n_i) over its kFeedbackNeighbors
+// nearest output points whose normals lie within kFeedbackMaxAngleDegrees of its own (the
+// other face of an edge does not count), v_i the squared standard error of that mean: where
+// m_i is within two standard errors of 0 the point stays.
+//
+// It needs the neighbourhood k to be as wide as the noise asks: where the probe reads sigma
+// above kCalibratedReadRatio spacings it reads low (neighborhood_size.h), k is narrower, the
+// output follows the noise over these neighbours (on the bunny at 50K and 3% their mean
+// noise is 3x what independent noise would leave), and the feedback returns that noise; the
+// caller applies it only below that reading (docs/method.md, "The mean offset fed back").
+#ifndef LPD_SOLVERS_OFFSET_FEEDBACK_H_
+#define LPD_SOLVERS_OFFSET_FEEDBACK_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "energy/point3.h"
+
+namespace lpd::solvers {
+
+constexpr int kFeedbackNeighbors = 120;
+constexpr double kFeedbackMaxAngleDegrees = 20.0;
+
+// `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) after the
+// feedback above. Only points with movable[i] and a nonzero normal take part (outliers are
+// left out). Deterministic for any thread count.
+energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
+                                      const energy::PointList& outputs,
+                                      const energy::PointList& normals,
+                                      const std::vector<uint8_t>& movable, int num_threads);
+
+}  // namespace lpd::solvers
+
+#endif  // LPD_SOLVERS_OFFSET_FEEDBACK_H_

@@ -1,0 +1,128 @@
+// FeedBackMeanOffsets against closed forms: a constant offset is fed back whole whatever the
+// normals' signs, each face of an edge takes its own offset, and zero-mean offsets move the
+// points by far less than their mean's standard error. DenoisePointSet with it on a cone.
+#include "solvers/offset_feedback.h"
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "experiments/shapes/noise.h"
+#include "experiments/shapes/poisson_disk_sampling.h"
+#include "experiments/shapes/shape_catalog.h"
+#include "lpd/presets.h"
+#include "solvers/denoise_point_set.h"
+
+namespace lpd::solvers {
+namespace {
+
+// Outputs on a grid of the plane z = 0 (spacing 0.01), normals +-z in a seeded random mix.
+struct PlaneOutputs {
+  energy::PointList outputs, normals;
+};
+
+PlaneOutputs GridOnPlane(int side, uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::bernoulli_distribution flip(0.5);
+  PlaneOutputs plane;
+  for (int a = 0; a < side; ++a) {
+    for (int b = 0; b < side; ++b) {
+      plane.outputs.emplace_back(0.01 * a, 0.01 * b, 0.0);
+      plane.normals.emplace_back(0.0, 0.0, flip(random) ? -1.0 : 1.0);
+    }
+  }
+  return plane;
+}
+
+TEST(FeedBackMeanOffsets, FeedsAConstantOffsetBackWholeWhateverTheNormalsSigns) {
+  const PlaneOutputs plane = GridOnPlane(40, 1);
+  energy::PointList inputs = plane.outputs;
+  for (auto& p : inputs) p.z() = 0.003;  // every input 0.003 above its output
+  const std::vector<uint8_t> movable(inputs.size(), 1);
+  for (int threads : {1, 2}) {
+    const energy::PointList fed =
+        FeedBackMeanOffsets(inputs, plane.outputs, plane.normals, movable, threads);
+    for (size_t i = 0; i < fed.size(); ++i) {
+      EXPECT_NEAR(fed[i].z(), 0.003, 1e-15);  // zero variance: no shrinkage
+      EXPECT_EQ(fed[i].x(), plane.outputs[i].x());
+    }
+  }
+}
+
+TEST(FeedBackMeanOffsets, EachFaceOfAnEdgeTakesItsOwnOffset) {
+  // Face A: z = 0, x in [0, 0.4), inputs 0.002 above. Face B: x = 0, z in (0, 0.4), inputs
+  // 0.005 to the side. Their normals are 90 degrees apart, so neither counts the other.
+  energy::PointList outputs, normals, inputs;
+  for (int a = 0; a < 40; ++a) {
+    for (int b = 0; b < 40; ++b) {
+      outputs.emplace_back(0.01 * a, 0.01 * b, 0.0);
+      normals.emplace_back(0.0, 0.0, 1.0);
+      inputs.emplace_back(0.01 * a, 0.01 * b, 0.002);
+      outputs.emplace_back(0.0, 0.01 * b, 0.01 * (a + 1));
+      normals.emplace_back(-1.0, 0.0, 0.0);
+      inputs.emplace_back(-0.005, 0.01 * b, 0.01 * (a + 1));
+    }
+  }
+  const std::vector<uint8_t> movable(inputs.size(), 1);
+  const energy::PointList fed = FeedBackMeanOffsets(inputs, outputs, normals, movable, 2);
+  for (size_t i = 0; i < fed.size(); i += 2) {
+    EXPECT_NEAR(fed[i].z(), 0.002, 1e-15);
+    EXPECT_NEAR(fed[i + 1].x(), -0.005, 1e-15);
+  }
+}
+
+TEST(FeedBackMeanOffsets, ZeroMeanOffsetsBarelyMoveThePoints) {
+  // Inputs off their outputs by independent N(0, s^2): a mean over 120 has standard error
+  // s / sqrt(120); shrunk below two standard errors, the RMS move is a fraction of it.
+  const PlaneOutputs plane = GridOnPlane(60, 2);
+  std::mt19937_64 random(3);
+  std::normal_distribution<double> noise(0.0, 0.004);
+  energy::PointList inputs = plane.outputs;
+  for (auto& p : inputs) p.z() = noise(random);
+  std::vector<uint8_t> movable(inputs.size(), 1);
+  movable[7] = 0;  // an outlier: left where it is
+  const energy::PointList fed = FeedBackMeanOffsets(inputs, plane.outputs, plane.normals,
+                                                    movable, 2);
+  double sum_of_squares = 0.0;
+  for (const auto& p : fed) sum_of_squares += p.z() * p.z();
+  const double rms = std::sqrt(sum_of_squares / fed.size());
+  EXPECT_LT(rms, 0.3 * 0.004 / std::sqrt(120.0));
+  EXPECT_EQ(fed[7], plane.outputs[7]);
+}
+
+TEST(OffsetFeedback, BringsAConeCloserThanTheDefaultWithoutIt) {
+  // 10,000 Poisson-disk samples of a cone (apex angle 60 degrees), Gaussian noise 3% of its
+  // unit-sphere radius: a sphere fitted to planes over a wide neighbourhood cannot follow a
+  // curvature that changes along the cone, and the output lies inside it; the feedback takes
+  // part of that back. Measured: mean distance 2.820e-3 without, 2.713e-3 with. (On a
+  // sphere, which the fitted spheres follow exactly, it changes nothing.)
+  const experiments::ProceduralShape cone = experiments::MakeShape({"cone", {}});
+  experiments::NoiseOptions noise;
+  noise.sigma = 0.03;
+  noise.scale = experiments::NoiseScale::kUnitSphereRadius;
+  noise.seed = 5;
+  const energy::PointList points =
+      experiments::ApplyNoise(experiments::PoissonDiskSample(cone, 10000, 4).points, {}, noise)
+          .points;
+  DenoiseOptions options = PresetOptions(Preset::kDefault);
+  options.settings.num_threads = 2;
+  auto mean_distance = [&](bool feedback) {
+    options.final_step.offset_feedback = feedback;
+    const DenoiseResult result = DenoisePointSet(points, options);
+    double sum = 0.0;
+    int kept = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (!result.kept[i]) continue;
+      sum += cone.DistanceToSurface(result.projected[i]);
+      ++kept;
+    }
+    return sum / kept;
+  };
+  const double without = mean_distance(false);
+  const double with = mean_distance(true);
+  EXPECT_LT(with, 0.98 * without) << "with " << with << " without " << without;
+}
+
+}  // namespace
+}  // namespace lpd::solvers
