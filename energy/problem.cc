@@ -30,9 +30,13 @@ double MedianAlpha(const Problem& problem) {
   return *middle;
 }
 
+double SpacingFromMedianAlpha(double median_alpha, int k) {
+  return std::sqrt(2.0 * M_PI * median_alpha / k);
+}
+
 double SampleSpacing(const Problem& problem) {
   if (problem.k() <= 0) return 0.0;
-  return std::sqrt(2.0 * M_PI * MedianAlpha(problem) / problem.k());
+  return SpacingFromMedianAlpha(MedianAlpha(problem), problem.k());
 }
 
 void ComputeWeights(double min_squared_distance_ratio, Problem* problem) {

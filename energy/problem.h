@@ -56,8 +56,10 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
 // data-derived weights and the spacing estimate are expressed in.
 double MedianAlpha(const Problem& problem);
 
-// The sample spacing sqrt(2 pi median alpha_i / k): alpha_i, the mean squared distance to k
-// neighbours, is k spacing^2 / (2 pi) on a uniformly sampled disk (0 for an empty problem).
+// The sample spacing sqrt(2 pi median_alpha / k): alpha, the mean squared distance to k
+// neighbours, is k spacing^2 / (2 pi) on a uniformly sampled disk.
+double SpacingFromMedianAlpha(double median_alpha, int k);
+// SpacingFromMedianAlpha of the problem's alpha_i and k (0 for an empty problem).
 double SampleSpacing(const Problem& problem);
 
 // Fills alpha and beta from problem->points and problem->graph (used by BuildProblem and by

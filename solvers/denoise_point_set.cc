@@ -215,13 +215,20 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
                              options.settings.num_threads, &result.projected, &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
                                          options.final_step);
-  if (options.final_step.even_spacing_rounds > 0) {
-    energy::PointList normalized(result.projected.size());
-    std::vector<uint8_t> movable(result.projected.size());
+  // Even spacing and the offset feedback move the output in the normalized frame; outliers
+  // stay where they are.
+  energy::PointList normalized;
+  std::vector<uint8_t> movable;
+  auto normalize_output = [&] {
+    normalized.resize(result.projected.size());
+    movable.resize(result.projected.size());
     for (size_t i = 0; i < normalized.size(); ++i) {
       normalized[i] = problem.frame.ToNormalized(result.projected[i]);
       movable[i] = !result.indicators.is_outlier[i];
     }
+  };
+  if (options.final_step.even_spacing_rounds > 0) {
+    normalize_output();
     const energy::PointList spread =
         SpreadEvenly(normalized, result.normals, movable, options.final_step.even_spacing_rounds,
                      options.settings.num_threads);
@@ -238,12 +245,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   const NeighborhoodSize& estimates = state.neighborhood;
   if (options.final_step.offset_feedback && estimates.spacing > 0.0 &&
       estimates.noise_sigma <= kCalibratedReadRatio * estimates.spacing) {
-    energy::PointList normalized(result.projected.size());
-    std::vector<uint8_t> movable(result.projected.size());
-    for (size_t i = 0; i < normalized.size(); ++i) {
-      normalized[i] = problem.frame.ToNormalized(result.projected[i]);
-      movable[i] = !result.indicators.is_outlier[i];
-    }
+    normalize_output();
     const energy::PointList fed_back = FeedBackMeanOffsets(
         problem.points, normalized, result.normals, movable, options.settings.num_threads);
     for (size_t i = 0; i < normalized.size(); ++i) {

@@ -15,6 +15,7 @@
 #include "energy/coordinate_quantization.h"
 #include "energy/normalization.h"
 #include "energy/nearest_neighbors.h"
+#include "energy/problem.h"
 #include "energy/sheet_split.h"
 #include "energy/split_search.h"
 #include "solvers/median.h"
@@ -204,7 +205,7 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   // the three degrees of freedom the fitted plane absorbs given back.
   size.noise_sigma = std::max(1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0)),
                              energy::QuantizationNoise(points) / frame.scale);
-  size.spacing = std::sqrt(2.0 * M_PI * Median(&alpha) / k);
+  size.spacing = energy::SpacingFromMedianAlpha(Median(&alpha), k);
   if (!(size.spacing > 0.0)) {
     throw std::invalid_argument(
         "most points coincide with their " + std::to_string(k) +

@@ -50,7 +50,10 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
                    if (!(mean * mean > 0.0)) return;
                    shift[r] = mean * std::max(0.0, 1.0 - 4.0 * squared_error / (mean * mean));
                  });
-  for (int r = 0; r < count; ++r) result[rows[r]] = outputs[rows[r]] + shift[r] * normals[rows[r]];
+  for (int r = 0; r < count; ++r) {
+    const int i = rows[r];
+    result[i] = outputs[i] + shift[r] * normals[i];
+  }
   return result;
 }
 
