@@ -125,7 +125,8 @@ solvers::DenoiseState ResumeState(solvers::DenoiseOptions* options) {
   // What made the saved problem and start cannot change now (and the preset would only
   // restate parameters the state already fixes).
   for (const char* fixed : {"k", "k_radius_sigmas", "k_wide_noise", "max_k", "max_problem_size",
-                            "far_factor", "initialization", "initialization_seed", "preset"}) {
+                            "far_factor", "merge_duplicates", "initialization",
+                            "initialization_seed", "preset"}) {
     if (FlagGiven(fixed)) {
       throw std::invalid_argument(std::string("--") + fixed +
                                   " cannot change on --resume (the state fixes it)");
@@ -243,15 +244,22 @@ int KeptFeatures(const solvers::DenoiseResult& result) {
 // Where the summary goes: stdout, or stderr when stdout carries the output ("-o -").
 std::FILE* Report() { return FLAGS_output == io::kStandardStream ? stderr : stdout; }
 
+// " (N repeated points merged)" when the input repeated points.
+std::string DuplicatesNote(const solvers::DenoiseResult& result) {
+  if (result.num_duplicates == 0) return "";
+  return " (" + std::to_string(result.num_duplicates) + " repeated points merged)";
+}
+
 // The run's summary on stdout (stderr for the solver's brief report and notes).
 void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOptions& options,
                   size_t num_input_points, size_t num_output_points) {
   std::fprintf(stderr, "%s\n", result.summary.BriefReport().c_str());
   if (!result.removal_note.empty()) std::fprintf(stderr, "note: %s\n", result.removal_note.c_str());
   std::fprintf(Report(), 
-      "points in %zu, out %zu, outliers flagged %d (%d isolated, %d far), removed %d, feature "
-      "points %d, iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
-      num_input_points, num_output_points, result.num_outliers, result.num_isolated,
+      "points in %zu%s, out %zu, outliers flagged %d (%d isolated, %d far), removed %d, "
+      "feature points %d, iterations %d, passes %d, time %.2f s (k-NN %.2f s)\n",
+      num_input_points, DuplicatesNote(result).c_str(), num_output_points, result.num_outliers,
+      result.num_isolated,
       result.num_far, result.num_removed, KeptFeatures(result), result.summary.num_iterations, result.passes,
       result.total_seconds, result.setup_seconds);
   std::string chosen;

@@ -67,6 +67,7 @@ std::string RunSummaryJson(const RunDescription& run, const solvers::DenoiseOpti
        {"outliers_flagged", Integer(result.num_outliers)},
        {"isolated", Integer(result.num_isolated)},
        {"far", Integer(result.num_far)},
+       {"duplicates", Integer(result.num_duplicates)},
        {"removed", Integer(result.num_removed)},
        {"output_feature_points", Integer(features)}});
   return io::JsonObject(

@@ -481,6 +481,12 @@ std::vector<Parameter> FinalStepParameters() {
               "kept out of the frame, the noise estimate and k (0: off)",
               "", "0"},
              [](O& o) -> double& { return o.far_points.factor; }),
+      Flag("merge_duplicates", kBoth,
+           {kOutliers,
+            "before anything else, points with identical coordinates are solved as one and "
+            "every copy takes its result (a repeated point is no new sample of the surface)",
+            "", "false"},
+           [](O& o) -> bool& { return o.merge_duplicates; }),
       Integer("isolation_neighbors", kBoth,
               {kOutliers, "the neighbour rank of isolation_factor's test"},
               [](O& o) -> int& { return o.final_step.isolation.neighbors; }),

@@ -88,6 +88,7 @@ py::dict SummaryDict(const lpd::Summary& s) {
   d["outliers"] = s.outliers;
   d["isolated"] = s.isolated;
   d["far"] = s.far;
+  d["duplicates"] = s.duplicates;
   d["removed"] = s.removed;
   d["features"] = s.features;
   d["solved_points"] = s.solved_points;

@@ -1,6 +1,7 @@
 #include "solvers/denoise_point_set.h"
 
 #include <cstdio>
+#include <numeric>
 #include <stdexcept>
 #include <vector>
 
@@ -8,6 +9,7 @@
 
 #include "energy/spatial_order.h"
 #include "energy/wall_clock.h"
+#include "solvers/duplicate_points.h"
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
 #include "solvers/offset_feedback.h"
@@ -387,12 +389,16 @@ DenoiseResult DenoiseNearPoints(const energy::PointList& points, const DenoiseOp
                               hooks.progress, normals);
 }
 
-// The result on the points that were not far (`rows` of the input, increasing), extended to
-// all input points: far points stay where they are, flagged as outliers with score 1.
-DenoiseResult WithFarPoints(DenoiseResult near, const std::vector<int>& rows,
-                            const energy::PointList& points, bool remove_outliers) {
+// The result on the solved points (`rows` of the input, increasing), extended to all input
+// points: far points stay where they are, flagged as outliers with score 1; a repeated
+// point takes the result of its first occurrence first[i].
+DenoiseResult ToAllInputPoints(DenoiseResult solved, const std::vector<int>& rows,
+                               const std::vector<uint8_t>& far, const std::vector<int>& first,
+                               const energy::PointList& points, bool remove_outliers) {
   const size_t n = points.size();
-  DenoiseResult result = std::move(near);
+  DenoiseResult result = std::move(solved);
+  std::vector<int> row_of(n, -1);
+  for (size_t r = 0; r < rows.size(); ++r) row_of[rows[r]] = static_cast<int>(r);
   energy::PointList projected = points, normals(n, energy::Point3::Zero());
   PointIndicators indicators;
   indicators.outlier_score.assign(n, 1.0);
@@ -400,8 +406,15 @@ DenoiseResult WithFarPoints(DenoiseResult near, const std::vector<int>& rows,
   indicators.is_outlier.assign(n, 1);
   indicators.is_feature.assign(n, 0);
   std::vector<uint8_t> kept(n, remove_outliers ? 0 : 1);
-  for (size_t r = 0; r < rows.size(); ++r) {
-    const int i = rows[r];
+  result.num_far = 0;
+  result.num_duplicates = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (far[i]) {
+      ++result.num_far;
+      continue;
+    }
+    result.num_duplicates += first[i] != static_cast<int>(i);
+    const int r = row_of[first[i]];
     projected[i] = result.projected[r];
     normals[i] = result.normals[r];
     indicators.outlier_score[i] = result.indicators.outlier_score[r];
@@ -410,9 +423,14 @@ DenoiseResult WithFarPoints(DenoiseResult near, const std::vector<int>& rows,
     indicators.is_feature[i] = result.indicators.is_feature[r];
     kept[i] = result.kept[r];
   }
-  result.num_far = static_cast<int>(n - rows.size());
-  result.num_outliers += result.num_far;
-  if (remove_outliers) result.num_removed += result.num_far;
+  result.num_outliers = 0;
+  result.num_features = 0;
+  result.num_removed = 0;
+  for (size_t i = 0; i < n; ++i) {
+    result.num_outliers += indicators.is_outlier[i];
+    result.num_features += indicators.is_feature[i];
+    result.num_removed += !kept[i];
+  }
   result.projected = std::move(projected);
   result.normals = std::move(normals);
   result.indicators = std::move(indicators);
@@ -452,22 +470,39 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   const std::vector<uint8_t> far = FlagFarPoints(points, options.far_points);
-  std::vector<int> rows;
+  std::vector<int> first(points.size());
+  if (options.merge_duplicates) {
+    first = FirstOccurrences(points);
+  } else {
+    std::iota(first.begin(), first.end(), 0);
+  }
+  std::vector<int> rows;  // the points solved: neither far nor a repeat of an earlier one
+  size_t repeats = 0;
   for (size_t i = 0; i < points.size(); ++i) {
-    if (!far[i]) rows.push_back(static_cast<int>(i));
+    const bool repeat = first[i] != static_cast<int>(i);
+    repeats += repeat;
+    if (!far[i] && !repeat) rows.push_back(static_cast<int>(i));
+  }
+  const size_t fewest = (options.choose_k ? options.neighborhood.min_k : options.problem.k) + 1;
+  if (repeats > 0 && rows.size() < fewest) {
+    throw std::invalid_argument(
+        "only " + std::to_string(points.size() - repeats) + " distinct points among " +
+        std::to_string(points.size()) + " (the others repeat them): need at least " +
+        std::to_string(fewest) + (options.choose_k ? " to choose k from the data" : "") +
+        " (give a smaller --k)");
   }
   DenoiseResult result;
   if (rows.size() == points.size()) {
     result = DenoiseNearPoints(points, options, hooks, normals);
   } else {
-    energy::PointList near_points, near_normals;
+    energy::PointList solved_points, solved_normals;
     for (int i : rows) {
-      near_points.push_back(points[i]);
-      if (normals) near_normals.push_back((*normals)[i]);
+      solved_points.push_back(points[i]);
+      if (normals) solved_normals.push_back((*normals)[i]);
     }
-    result = WithFarPoints(
-        DenoiseNearPoints(near_points, options, hooks, normals ? &near_normals : nullptr), rows,
-        points, options.final_step.remove_outliers);
+    result = ToAllInputPoints(
+        DenoiseNearPoints(solved_points, options, hooks, normals ? &solved_normals : nullptr),
+        rows, far, first, points, options.final_step.remove_outliers);
   }
   if (options.mark_outliers) MarkRemovedPoints(points, &result);
   result.total_seconds = SecondsSince(start);

@@ -56,6 +56,9 @@ struct DenoiseOptions {
   FinalDenoisingOptions final_step;          // indicators and outlier removal
   // Stray points far from the whole cloud, set aside before the first stage (DenoisePointSet).
   FarPointOptions far_points;
+  // Points given more than once are solved once and each copy takes the result
+  // (duplicate_points.h; paper: false).
+  bool merge_duplicates = true;
   // Keep every point in the result: those the passes removed get kept = 1 back, at their
   // input position with a zero normal, still flagged (is_outlier) with their score.
   bool mark_outliers = false;
@@ -88,6 +91,7 @@ struct DenoiseResult {
   int num_removed = 0;               // actually removed
   int num_isolated = 0;              // of those, found by the isolation test
   int num_far = 0;                   // of those, far from the whole cloud (far_points.h)
+  int num_duplicates = 0;            // input points that repeat an earlier one (merged)
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
@@ -145,7 +149,10 @@ struct DenoiseHooks {
 };
 
 // The pipeline, sequenced here only: the far points set aside (options.far_points; they are
-// flagged as outliers with score 1 and keep their input position), then StartDenoising, MinimizeFromState, FinishDenoising,
+// flagged as outliers with score 1 and keep their input position) and repeated points merged
+// (options.merge_duplicates; each copy takes its first occurrence's result, and the counts
+// of the result are over all input points but num_isolated, over the points solved), then
+// StartDenoising, MinimizeFromState, FinishDenoising,
 // then further passes without the outliers (options.final_step.outlier_passes: while the
 // last pass removed more than rerun_removed_fraction of its points, the points it kept are
 // denoised again from their input coordinates, and their results replace the earlier ones;

@@ -72,6 +72,19 @@ def test_result_rows_follow_the_kept_input_rows():
     assert summary["termination"] in ("CONVERGENCE", "NO_CONVERGENCE")
 
 
+def test_repeated_rows_take_their_first_occurrences_result():
+    points = noisy_box(2000, 0.005, seed=4)
+    once = lpd.denoise(points, threads=1)
+    twice = lpd.denoise(np.vstack([points, points[::-1]]), threads=1)
+    assert twice.summary["duplicates"] == 2000 and once.summary["duplicates"] == 0
+    first = twice.index < 2000
+    np.testing.assert_array_equal(twice.index[first], once.index)
+    np.testing.assert_array_equal(twice.points[first], once.points)
+    # row 2000 + r repeats row 1999 - r
+    np.testing.assert_array_equal(twice.points[~first][::-1],
+                                  once.points)
+
+
 def test_denoising_brings_the_box_closer_to_its_faces():
     clean_distance = lambda p: np.min(np.abs(np.concatenate([p, 1.0 - p], 1)), axis=1)
     points = noisy_box(6000, 0.01, seed=3)
