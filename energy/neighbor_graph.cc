@@ -41,7 +41,8 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   graph.neighbors.resize(static_cast<size_t>(n) * k);
   const int searched =
       split_sheets ? std::min(n, std::max(2 * k + 1, kSheetSplitPoints)) : k + 1;
-  std::vector<float> separation(split_sheets ? n : 0), within_kurtosis(split_sheets ? n : 0);
+  std::vector<float> separation(split_sheets ? n : 0), within_kurtosis(split_sheets ? n : 0),
+      footprint_difference(split_sheets ? n : 0);
   // With split_sheets, each point's k nearest candidates on its own side, in case its region
   // turns out thin (found in the same search, so that a thin region needs no second one).
   std::vector<int> own_side(split_sheets ? static_cast<size_t>(n) * k : 0);
@@ -60,6 +61,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
             : SplitSheets(points, members.data(), static_cast<int>(members.size()));
     separation[i] = static_cast<float>(split.separation);
     within_kurtosis[i] = static_cast<float>(split.within_kurtosis);
+    footprint_difference[i] = static_cast<float>(split.footprint_difference);
     int* own = own_side.data() + static_cast<size_t>(i) * k;
     if (!(split.separation > 0.0)) {  // not two parallel sides here
       std::copy_n(members.begin() + 1, k, own);
@@ -89,10 +91,10 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     size_t seeds = 0;
     for (int i = 0; i < n; ++i) {
       RegionSplits region;
-      region.Add(separation[i], within_kurtosis[i]);
+      region.Add(separation[i], within_kurtosis[i], footprint_difference[i]);
       for (int a = 0; a < k; ++a) {
         const int j = graph.NeighborsOf(i)[a];
-        region.Add(separation[j], within_kurtosis[j]);
+        region.Add(separation[j], within_kurtosis[j], footprint_difference[j]);
       }
       is_thin[i] = region.TwoSides(kThinRegionSeparation);
       may_grow[i] = region.TwoSides(kThinRegionGrowthSeparation);

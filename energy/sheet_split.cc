@@ -33,6 +33,33 @@ bool PlaneNormal(const PointList& points, const int* members, int count,
   return true;
 }
 
+// The footprint difference of the split's two runs (sheet_split.h): the runs' means and
+// covariances within the plane (each point's offset along the normal taken off).
+double FootprintDifference(const PointList& points, const int* members, int count,
+                           const SheetSplit& split) {
+  Eigen::Vector3d sum[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  Eigen::Matrix3d moment[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  int size[2] = {0, 0};
+  for (int a = 0; a < count; ++a) {
+    const Eigen::Vector3d d = points[members[a]] - split.mean;
+    const double offset = split.normal.dot(d);
+    const Eigen::Vector3d in_plane = d - offset * split.normal;
+    const int side = split.Side(offset);
+    sum[side] += in_plane;
+    moment[side] += in_plane * in_plane.transpose();
+    ++size[side];
+  }
+  Eigen::Vector3d mean[2];
+  Eigen::Matrix3d covariance[2];
+  for (int side = 0; side < 2; ++side) {
+    mean[side] = sum[side] / size[side];
+    covariance[side] = moment[side] / size[side] - mean[side] * mean[side].transpose();
+  }
+  const double spread = 0.5 * (covariance[0].trace() + covariance[1].trace());
+  if (!(spread > 0.0)) return 0.0;
+  return ((covariance[0] - covariance[1]).norm() + (mean[0] - mean[1]).squaredNorm()) / spread;
+}
+
 }  // namespace
 
 SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
@@ -96,6 +123,7 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
     }
   }
   split.separation = (split.upper_mean - split.lower_mean) / within_deviation;
+  split.footprint_difference = FootprintDifference(points, members, count, split);
   return split;
 }
 

@@ -102,14 +102,14 @@ TEST(SheetSplit, WithinRunKurtosisTellsAFlatToppedSlabFromTwoSides) {
   // Two Gaussian sides 6 deviations apart: runs of nearly Gaussian offsets (kurtosis 3).
   EXPECT_NEAR(sides_kurtosis, 3.0, 0.3);
   RegionSplits slab_region, sides_region;
-  slab_region.Add(slab_separation, slab_kurtosis);
-  sides_region.Add(6.0, sides_kurtosis);
+  slab_region.Add(slab_separation, slab_kurtosis, 0.0);
+  sides_region.Add(6.0, sides_kurtosis, 0.0);
   EXPECT_GT(slab_separation, kThinRegionSeparation);
   EXPECT_FALSE(slab_region.TwoSides(kThinRegionSeparation));
   EXPECT_TRUE(sides_region.TwoSides(kThinRegionSeparation));
   // Two slabs with a gap between them: flat-topped runs, but farther apart than a slab's.
   RegionSplits slabs_apart;
-  slabs_apart.Add(kClearSidesSeparation + 0.5, slab_kurtosis);
+  slabs_apart.Add(kClearSidesSeparation + 0.5, slab_kurtosis, 0.0);
   EXPECT_TRUE(slabs_apart.TwoSides(kThinRegionSeparation));
   EXPECT_LT(slab_separation, kClearSidesSeparation - 0.5);
 }
@@ -141,6 +141,74 @@ TEST(SheetSplit, NeighbourhoodsOfOneSheetAreTheNearestPoints) {
   const PointList points = Sheets(4000, 0.0, 0.004, 0.0, 5, nullptr, 1.0);
   EXPECT_EQ(BuildNeighborGraph(points, 16, 2, true).neighbors,
             BuildNeighborGraph(points, 16, 2, false).neighbors);
+}
+
+// Points uniform over the unit disk (by area) at heights z(x, y), no noise.
+PointList DiskSurface(int count, double (*height)(double, double), uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  PointList points;
+  for (int i = 0; i < count; ++i) {
+    const double radius = std::sqrt(uniform(random)), angle = 2 * M_PI * uniform(random);
+    const double x = radius * std::cos(angle), y = radius * std::sin(angle);
+    points.emplace_back(x, y, height(x, y));
+  }
+  return points;
+}
+
+SheetSplit SplitAll(const PointList& points) {
+  const std::vector<int> members = All(static_cast<int>(points.size()));
+  return SplitSheets(points, members.data(), static_cast<int>(members.size()));
+}
+
+// Closed forms, for the unit disk sampled uniformly: on the bowl z = 0.05 r^2 the height is
+// uniform, so the runs are the inner disk r^2 < 1/2 and the outer ring, with covariances I/8
+// and 3I/8 and the same mean: difference (sqrt(2) / 4) / (1 / 2) = 1 / sqrt(2). On the
+// saddle z = 0.05 xy the runs are opposite quadrants, covariances I/4 +- (1 / (2 pi)) [0 1;
+// 1 0]: difference (sqrt(2) / pi) / (1 / 2) = 2 sqrt(2) / pi. Two sides over the same square
+// differ by sampling only.
+TEST(SheetSplit, FootprintDifferenceMatchesClosedForms) {
+  const SheetSplit bowl =
+      SplitAll(DiskSurface(40000, [](double x, double y) { return 0.05 * (x * x + y * y); }, 1));
+  EXPECT_NEAR(bowl.footprint_difference, 1.0 / std::sqrt(2.0), 0.01);
+  EXPECT_NEAR(bowl.within_kurtosis, 1.8, 0.02);  // uniform halves: the kurtosis test's case
+  const SheetSplit saddle =
+      SplitAll(DiskSurface(40000, [](double x, double y) { return 0.05 * x * y; }, 2));
+  EXPECT_NEAR(saddle.footprint_difference, 2.0 * std::sqrt(2.0) / M_PI, 0.02);
+  const SheetSplit sides = SplitAll(Sheets(40000, 0.06, 0.01, 0.5, 3));
+  EXPECT_LT(sides.footprint_difference, 0.02);
+  // At 128 points, as the region test sees them, two sides 4-6 deviations apart stay well
+  // under the bar.
+  double mean = 0.0;
+  for (uint64_t seed = 1; seed <= 50; ++seed) {
+    mean += SplitAll(Sheets(128, (4 + seed % 3) * 0.01, 0.01, 0.5, seed)).footprint_difference / 50;
+  }
+  EXPECT_LT(mean, 0.6 * kMaxTwoSidesFootprintDifference);
+}
+
+// A low-noise sheet bent one way (a cylinder) parts into a middle strip and two rims: its
+// runs are as far apart as two sides' and not flat-topped, but they cover the disk
+// differently, so the region is one sheet.
+TEST(SheetSplit, ALowNoiseCylinderIsNotTwoSides) {
+  std::mt19937_64 random(4);
+  std::normal_distribution<double> noise(0.0, 1e-4);
+  RegionSplits region;
+  double separation = 0.0, kurtosis = 0.0, footprint = 0.0;
+  const int regions = 40;
+  for (int seed = 1; seed <= regions; ++seed) {
+    PointList points = DiskSurface(128, [](double x, double) { return 0.1 * x * x; }, seed);
+    for (Point3& p : points) p.z() += noise(random);
+    const SheetSplit split = SplitAll(points);
+    region.Add(split);
+    separation += split.separation / regions;
+    kurtosis += split.within_kurtosis / regions;
+    footprint += split.footprint_difference / regions;
+  }
+  EXPECT_GT(separation, kThinRegionSeparation);
+  EXPECT_GT(kurtosis, kMinTwoSidesKurtosis);
+  EXPECT_LT(separation, kClearSidesSeparation);
+  EXPECT_GT(footprint, kMaxTwoSidesFootprintDifference);
+  EXPECT_FALSE(region.TwoSides(kThinRegionSeparation));
 }
 
 }  // namespace

@@ -183,5 +183,16 @@ TEST(ThinParts, WhereNothingIsThinSplittingChangesLittle) {
   }
 }
 
+TEST(ThinParts, AtNoiseFarUnderTheSpacingCurvedPartsAreNotTwoSides) {
+  // 20,000 points, noise 0.0003 (under a tenth of the spacing): the probe split 81% of the
+  // cylinder's regions and 50% of cad_part's before the footprint test (sheet_split.h).
+  for (const std::string spec : {"cylinder:radius=0.3,height=1", "cad_part"}) {
+    const NoisyShape noisy = Noisy(spec, 20000, 0.0003);
+    const NeighborhoodSize size = ChooseNeighborhoodSize(noisy.points, {}, 2);
+    EXPECT_LT(size.noise_sigma / size.spacing, 0.1) << spec;
+    EXPECT_LT(size.two_sheet_fraction, 0.1) << spec;
+  }
+}
+
 }  // namespace
 }  // namespace lpd::solvers
