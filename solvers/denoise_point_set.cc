@@ -486,7 +486,8 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
   const size_t fewest = (options.choose_k ? options.neighborhood.min_k : options.problem.k) + 1;
   if (repeats > 0 && rows.size() < fewest) {
     throw std::invalid_argument(
-        "only " + std::to_string(points.size() - repeats) + " distinct points among " +
+        "only " + std::to_string(points.size() - repeats) +
+        (points.size() - repeats == 1 ? " distinct point among " : " distinct points among ") +
         std::to_string(points.size()) + " (the others repeat them): need at least " +
         std::to_string(fewest) + (options.choose_k ? " to choose k from the data" : "") +
         " (give a smaller --k)");
