@@ -34,17 +34,16 @@ bool PlaneNormal(const PointList& points, const int* members, int count,
 }
 
 // The footprint difference of the split's two runs (sheet_split.h): the runs' means and
-// covariances within the plane (each point's offset along the normal taken off).
-double FootprintDifference(const PointList& points, const int* members, int count,
-                           const SheetSplit& split) {
+// covariances within the plane (each point's offset along the normal, offsets[a], taken off).
+double FootprintDifference(const PointList& points, const int* members,
+                           const std::vector<double>& offsets, const SheetSplit& split) {
   Eigen::Vector3d sum[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   Eigen::Matrix3d moment[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   int size[2] = {0, 0};
-  for (int a = 0; a < count; ++a) {
-    const Eigen::Vector3d d = points[members[a]] - split.mean;
-    const double offset = split.normal.dot(d);
-    const Eigen::Vector3d in_plane = d - offset * split.normal;
-    const int side = split.Side(offset);
+  for (size_t a = 0; a < offsets.size(); ++a) {
+    const Eigen::Vector3d in_plane =
+        points[members[a]] - split.mean - offsets[a] * split.normal;
+    const int side = split.Side(offsets[a]);
     sum[side] += in_plane;
     moment[side] += in_plane * in_plane.transpose();
     ++size[side];
@@ -123,7 +122,7 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
     }
   }
   split.separation = (split.upper_mean - split.lower_mean) / within_deviation;
-  split.footprint_difference = FootprintDifference(points, members, count, split);
+  split.footprint_difference = FootprintDifference(points, members, offsets, split);
   return split;
 }
 

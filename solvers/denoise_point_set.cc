@@ -407,13 +407,11 @@ DenoiseResult ToAllInputPoints(DenoiseResult solved, const std::vector<int>& row
   indicators.is_feature.assign(n, 0);
   std::vector<uint8_t> kept(n, remove_outliers ? 0 : 1);
   result.num_far = 0;
-  result.num_duplicates = 0;
   for (size_t i = 0; i < n; ++i) {
     if (far[i]) {
       ++result.num_far;
       continue;
     }
-    result.num_duplicates += first[i] != static_cast<int>(i);
     const int r = row_of[first[i]];
     projected[i] = result.projected[r];
     normals[i] = result.normals[r];
@@ -505,6 +503,7 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
         DenoiseNearPoints(solved_points, options, hooks, normals ? &solved_normals : nullptr),
         rows, far, first, points, options.final_step.remove_outliers);
   }
+  result.num_duplicates = static_cast<int>(repeats);
   if (options.mark_outliers) MarkRemovedPoints(points, &result);
   result.total_seconds = SecondsSince(start);
   return result;
