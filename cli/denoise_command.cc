@@ -244,10 +244,15 @@ int KeptFeatures(const solvers::DenoiseResult& result) {
 // Where the summary goes: stdout, or stderr when stdout carries the output ("-o -").
 std::FILE* Report() { return FLAGS_output == io::kStandardStream ? stderr : stdout; }
 
-// " (N repeated points merged)" when the input repeated points.
+// " (N repeated points merged)" when the input repeated points, exactly or nearly.
 std::string DuplicatesNote(const solvers::DenoiseResult& result) {
-  if (result.num_duplicates == 0) return "";
-  return " (" + std::to_string(result.num_duplicates) + " repeated points merged)";
+  std::string note;
+  if (result.num_duplicates > 0) note = std::to_string(result.num_duplicates) + " repeated";
+  if (result.num_near_repeats > 0) {
+    note += (note.empty() ? "" : " and ") + std::to_string(result.num_near_repeats) +
+            " nearly repeated";
+  }
+  return note.empty() ? "" : " (" + note + " points merged)";
 }
 
 // The run's summary on stdout (stderr for the solver's brief report and notes).

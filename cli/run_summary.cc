@@ -68,6 +68,7 @@ std::string RunSummaryJson(const RunDescription& run, const solvers::DenoiseOpti
        {"isolated", Integer(result.num_isolated)},
        {"far", Integer(result.num_far)},
        {"duplicates", Integer(result.num_duplicates)},
+       {"near_repeats", Integer(result.num_near_repeats)},
        {"removed", Integer(result.num_removed)},
        {"output_feature_points", Integer(features)}});
   return io::JsonObject(

@@ -43,6 +43,7 @@ Summary MakeSummary(const solvers::DenoiseResult& run, const solvers::DenoiseOpt
   summary.isolated = run.num_isolated;
   summary.far = run.num_far;
   summary.duplicates = run.num_duplicates;
+  summary.near_repeats = run.num_near_repeats;
   summary.removed = run.num_removed;
   summary.features = run.num_features;
   summary.solved_points = run.solved_points;

@@ -484,7 +484,9 @@ std::vector<Parameter> FinalStepParameters() {
       Flag("merge_duplicates", kBoth,
            {kOutliers,
             "before anything else, points with identical coordinates are solved as one and "
-            "every copy takes its result (a repeated point is no new sample of the surface)",
+            "every copy takes its result (a repeated point is no new sample of the surface); "
+            "so are points within a tenth of a spacing of an earlier one, where they are 5% "
+            "of the cloud or more (each moved along the surface by its offset)",
             "", "false"},
            [](O& o) -> bool& { return o.merge_duplicates; }),
       Integer("isolation_neighbors", kBoth,

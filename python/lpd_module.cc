@@ -89,6 +89,7 @@ py::dict SummaryDict(const lpd::Summary& s) {
   d["isolated"] = s.isolated;
   d["far"] = s.far;
   d["duplicates"] = s.duplicates;
+  d["near_repeats"] = s.near_repeats;
   d["removed"] = s.removed;
   d["features"] = s.features;
   d["solved_points"] = s.solved_points;

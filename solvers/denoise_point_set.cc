@@ -12,6 +12,7 @@
 #include "solvers/duplicate_points.h"
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
+#include "solvers/near_repeats.h"
 #include "solvers/offset_feedback.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
@@ -391,7 +392,8 @@ DenoiseResult DenoiseNearPoints(const energy::PointList& points, const DenoiseOp
 
 // The result on the solved points (`rows` of the input, increasing), extended to all input
 // points: far points stay where they are, flagged as outliers with score 1; a repeated
-// point takes the result of its first occurrence first[i].
+// point takes the result of its first occurrence first[i], a near repeat that result moved
+// by its offset from first[i] within the tangent plane there.
 DenoiseResult ToAllInputPoints(DenoiseResult solved, const std::vector<int>& rows,
                                const std::vector<uint8_t>& far, const std::vector<int>& first,
                                const energy::PointList& points, bool remove_outliers) {
@@ -415,6 +417,10 @@ DenoiseResult ToAllInputPoints(DenoiseResult solved, const std::vector<int>& row
     const int r = row_of[first[i]];
     projected[i] = result.projected[r];
     normals[i] = result.normals[r];
+    if (points[i] != points[first[i]]) {  // a near repeat
+      const energy::Point3 offset = points[i] - points[first[i]];
+      projected[i] += offset - offset.dot(normals[i]) * normals[i];
+    }
     indicators.outlier_score[i] = result.indicators.outlier_score[r];
     indicators.feature_score[i] = result.indicators.feature_score[r];
     indicators.is_outlier[i] = result.indicators.is_outlier[r];
@@ -481,6 +487,24 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
     repeats += repeat;
     if (!far[i] && !repeat) rows.push_back(static_cast<int>(i));
   }
+  size_t near_repeats = 0;
+  if (options.merge_duplicates) {
+    energy::PointList distinct(rows.size());
+    for (size_t r = 0; r < rows.size(); ++r) distinct[r] = points[rows[r]];
+    const std::vector<int> representative =
+        NearRepeatRepresentatives(distinct, options.settings.num_threads);
+    std::vector<int> kept_rows;
+    for (size_t r = 0; r < rows.size(); ++r) {
+      if (representative[r] == static_cast<int>(r)) {
+        kept_rows.push_back(rows[r]);
+      } else {
+        first[rows[r]] = rows[representative[r]];
+        ++near_repeats;
+      }
+    }
+    rows = std::move(kept_rows);
+    repeats += near_repeats;
+  }
   const size_t fewest = (options.choose_k ? options.neighborhood.min_k : options.problem.k) + 1;
   if (repeats > 0 && rows.size() < fewest) {
     throw std::invalid_argument(
@@ -503,7 +527,8 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
         DenoiseNearPoints(solved_points, options, hooks, normals ? &solved_normals : nullptr),
         rows, far, first, points, options.final_step.remove_outliers);
   }
-  result.num_duplicates = static_cast<int>(repeats);
+  result.num_duplicates = static_cast<int>(repeats - near_repeats);
+  result.num_near_repeats = static_cast<int>(near_repeats);
   if (options.mark_outliers) MarkRemovedPoints(points, &result);
   result.total_seconds = SecondsSince(start);
   return result;

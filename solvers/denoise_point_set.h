@@ -57,7 +57,8 @@ struct DenoiseOptions {
   // Stray points far from the whole cloud, set aside before the first stage (DenoisePointSet).
   FarPointOptions far_points;
   // Points given more than once are solved once and each copy takes the result
-  // (duplicate_points.h; paper: false).
+  // (duplicate_points.h), as are near repeats where they are common (near_repeats.h; each
+  // keeps its offset along the surface); paper: false.
   bool merge_duplicates = true;
   // Keep every point in the result: those the passes removed get kept = 1 back, at their
   // input position with a zero normal, still flagged (is_outlier) with their score.
@@ -92,6 +93,7 @@ struct DenoiseResult {
   int num_isolated = 0;              // of those, found by the isolation test
   int num_far = 0;                   // of those, far from the whole cloud (far_points.h)
   int num_duplicates = 0;            // input points that repeat an earlier one (merged)
+  int num_near_repeats = 0;          // input points within a tenth of a spacing of one (merged)
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
@@ -150,7 +152,8 @@ struct DenoiseHooks {
 
 // The pipeline, sequenced here only: the far points set aside (options.far_points; they are
 // flagged as outliers with score 1 and keep their input position) and repeated points merged
-// (options.merge_duplicates; each copy takes its first occurrence's result, and the counts
+// (options.merge_duplicates; each copy takes its first occurrence's result, a near repeat
+// that result moved along the tangent plane by its offset from it, and the counts
 // of the result are over all input points but num_isolated, over the points solved), then
 // StartDenoising, MinimizeFromState, FinishDenoising,
 // then further passes without the outliers (options.final_step.outlier_passes: while the

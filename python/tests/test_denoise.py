@@ -85,6 +85,19 @@ def test_repeated_rows_take_their_first_occurrences_result():
                                   once.points)
 
 
+
+def test_a_copy_a_hair_away_is_solved_with_its_original():
+    points = noisy_box(2000, 0.005, seed=4)
+    copy = points + 1e-7 * np.random.default_rng(5).standard_normal(points.shape)
+    once = lpd.denoise(points, threads=1)
+    twice = lpd.denoise(np.vstack([points, copy]), threads=1)
+    assert twice.summary["near_repeats"] >= 2000 and twice.summary["duplicates"] == 0
+    assert twice.summary["k"] == once.summary["k"]
+    assert abs(twice.summary["lambda"] / once.summary["lambda"] - 1) < 0.05
+    unmerged = lpd.denoise(np.vstack([points, copy]), threads=1, merge_duplicates=False)
+    assert unmerged.summary["near_repeats"] == 0
+    assert unmerged.summary["lambda"] < 0.1 * once.summary["lambda"]
+
 def test_denoising_brings_the_box_closer_to_its_faces():
     clean_distance = lambda p: np.min(np.abs(np.concatenate([p, 1.0 - p], 1)), axis=1)
     points = noisy_box(6000, 0.01, seed=3)
