@@ -27,7 +27,7 @@
 
 DEFINE_string(output, "", "output file (.ply with normals and indicators, or .xyz); also -o");
 DEFINE_string(input_format, "",
-              "format of INPUT (xyz, ply, off, obj) when its extension does not say it; needed "
+              "format of INPUT (xyz, ply, las, pcd, off, obj) when its extension does not say it; needed "
               "for '-', standard input");
 DEFINE_string(output_format, "",
               "format of OUTPUT (ply, xyz) when its extension does not say it; needed for "
@@ -214,6 +214,10 @@ DenoiseInput LoadInput(const std::vector<std::string>& arguments) {
   DenoiseInput input;
   if (!arguments.empty()) {
     io::PointCloud cloud = io::ReadPointCloud(arguments[0], FLAGS_input_format);
+    if (cloud.skipped_points > 0) {
+      std::fprintf(stderr, "%s: %zu points with a NaN coordinate (no return) left out\n",
+                   arguments[0].c_str(), cloud.skipped_points);
+    }
     input.points = std::move(cloud.points);
     input.normals = std::move(cloud.normals);
     input.properties.attributes = std::move(cloud.attributes);

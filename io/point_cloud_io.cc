@@ -18,6 +18,7 @@
 
 #include "io/atomic_output_file.h"
 #include "io/las_io.h"
+#include "io/pcd_io.h"
 
 namespace lpd::io {
 namespace {
@@ -659,8 +660,8 @@ namespace {
 std::string InputFormat(const std::string& path, const std::string& format) {
   if (!format.empty()) return format;
   if (path == kStandardStream) {
-    throw std::runtime_error("reading standard input ('-') needs --input_format (xyz, ply, off "
-                             "or obj)");
+    throw std::runtime_error("reading standard input ('-') needs --input_format (xyz, ply, "
+                             "las, pcd, off or obj)");
   }
   return FileExtension(path);
 }
@@ -698,11 +699,16 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
     cloud.points = ReadObj(name, in);
   } else if (extension == "las" || extension == "laz") {
     cloud = ReadLas(name, in);
+  } else if (extension == "pcd") {
+    cloud = ReadPcd(name, in);
   } else {
     Fail(name, 0, "unknown point-cloud format '." + extension +
-                      "' (expected .xyz, .txt, .pts, .ply, .off, .obj or .las)");
+                      "' (expected .xyz, .txt, .pts, .ply, .pcd, .off, .obj or .las)");
   }
-  if (cloud.points.empty()) Fail(name, 0, kNoPoints);
+  if (cloud.points.empty()) {
+    Fail(name, 0, cloud.skipped_points > 0 ? "every point has a NaN coordinate (no return)"
+                                           : kNoPoints);
+  }
   return cloud;
 }
 
@@ -742,6 +748,11 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
 std::string OutputFormat(const std::string& path, const std::string& format) {
   const std::string chosen = format.empty() ? FileExtension(path) : format;
   if (chosen == "ply" || chosen == "xyz" || chosen == "txt" || chosen == "las") return chosen;
+  if (chosen == "pcd") {
+    throw std::runtime_error("cannot write '" + path + "': lpd reads PCD but does not write "
+                             "it; write .ply (PCL reads it with pcl::io::loadPLYFile, or "
+                             "converts it with pcl_ply2pcd)");
+  }
   if (chosen == "laz") {
     throw std::runtime_error("cannot write '" + path + "': LAZ (compressed LAS) is not "
                              "supported; write .las and compress it with `laszip`");

@@ -4,7 +4,8 @@
 // spaces or tabs; '#' starts a comment; CRLF line ends and a UTF-8 byte-order mark are
 // accepted; columns 4-6 become normals when they are unit vectors on every line, other extra
 // columns are ignored), PLY (ascii, binary little or big endian; the x, y, z
-// properties of the "vertex" element), OFF and OBJ (vertices only). Every reader rejects
+// properties of the "vertex" element), LAS (las_io.h), PCD (pcd_io.h), OFF and OBJ
+// (vertices only). Every reader rejects
 // malformed lines, NaN and infinite coordinates with "FILE:LINE: reason", and empty files.
 // Write: PLY (binary little endian, with normals and per-point scalar properties that
 // CloudCompare and MeshLab show as scalar fields) or XYZ text, chosen by extension; writes
@@ -44,6 +45,8 @@ struct PointCloud {
   std::vector<std::string> comments;  // PLY header comments (one line each)
   // The LAS header a cloud read from LAS came with (las_io.h); written back with it.
   std::shared_ptr<const LasLayout> las;
+  // Points of the file left out: a PCD file's points with a NaN coordinate (pcd_io.h).
+  size_t skipped_points = 0;
 
   // The attribute called `name`, or nullptr.
   const PointAttribute* FindAttribute(const std::string& name) const;
@@ -54,7 +57,9 @@ struct PointCloud {
 // give their normals (nx, ny, nz) and every other per-vertex scalar property with its type;
 // XYZ files their normals as above and their other columns, when every line has as many, as
 // double attributes column_4, column_5, ...; LAS files every field of their records
-// (las_io.h); other formats give points only. LAZ is refused with how to convert it.
+// (las_io.h); PCD files (ascii, binary or binary_compressed) their normals, colours and
+// other fields (pcd_io.h); other formats give points only. LAZ is refused with how to
+// convert it.
 // `path` "-" reads standard input; `format` ("xyz", "ply", ...) replaces the extension and
 // is needed for "-". Pipes, FIFOs and devices are read without seeking.
 PointCloud ReadPointCloud(const std::string& path, const std::string& format = "");

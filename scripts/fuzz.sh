@@ -3,13 +3,13 @@
 # from the seed corpus in tests/fuzz/corpus/FORMAT. New interesting inputs go to
 # build-fuzz/corpus/FORMAT, crashes to build-fuzz/crashes/FORMAT; copy a crash into
 # tests/fuzz/corpus/FORMAT once fixed, so the ctest replay keeps it as a regression test.
-# Usage: scripts/fuzz.sh [SECONDS_PER_READER=600] [FORMAT...]   (default: xyz ply off obj las state sweep)
+# Usage: scripts/fuzz.sh [SECONDS_PER_READER=600] [FORMAT...]   (default: xyz ply off obj las pcd state sweep)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
 shift || true
 formats=("$@")
-[ ${#formats[@]} -gt 0 ] || formats=(xyz ply off obj las state sweep)
+[ ${#formats[@]} -gt 0 ] || formats=(xyz ply off obj las pcd state sweep)
 bash scripts/install_deps.sh clang libfuzzer-14-dev
 CXX=clang++ CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLPD_FUZZ=ON \
   >/dev/null

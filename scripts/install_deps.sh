@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake git pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev libgflags-dev
-  libnanoflann-dev libgtest-dev libbenchmark-dev libcgal-dev libyaml-cpp-dev
+  libnanoflann-dev libgtest-dev libbenchmark-dev libcgal-dev libyaml-cpp-dev liblzf-dev
   libopenmpi-dev openmpi-bin
   python3 python3-dev python3-matplotlib python3-numpy python3-pytest time
   pybind11-dev python3-pybind11 python3-open3d

@@ -82,6 +82,14 @@ ply("unknown_format.ply", "binary_middle_endian", 3, b"")
 ply("unknown_type.ply", "ascii", 1, b"1 2 3\n", "property float128 x\nproperty float y\nproperty float z\n")
 open(f"{d}/no_end_header.ply", "wb").write(b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n")
 open(f"{d}/faces_only.ply", "wb").write(b"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n3 0 1 2\n")
+def pcd(name, data, count, body, fields="FIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\n"):
+    header = f"# .PCD v0.7\nVERSION 0.7\n{fields}WIDTH {count}\nHEIGHT 1\nPOINTS {count}\nDATA {data}\n"
+    open(f"{d}/{name}", "wb").write(header.encode() + body)
+organized = [p if i % 10 else [float("nan")] * 3 for i, p in enumerate(noisy)]
+pcd("organized.pcd", "binary", len(noisy), b"".join(struct.pack("<fffI", *p, 0x00FF8000) for p in organized))
+pcd("huge_count.pcd", "binary", 4000000000, le)
+pcd("all_nan.pcd", "ascii", 2, b"nan nan nan 0\nnan 1 2 0\n")
+pcd("corrupt_lzf.pcd", "binary_compressed", 100, struct.pack("<II", 40, 1600) + bytes(range(40)))
 open(f"{d}/negative_count.off", "wb").write(b"OFF\n-5 0 0\n")
 open(f"{d}/short.obj", "wb").write(b"v 1 2 3\nv 1 2\n")
 open(f"{d}/garbage.yaml", "wb").write(bytes(random.randrange(256) for _ in range(2000)))
@@ -110,6 +118,7 @@ accept ply_crlf_and_bom "$dir/crlf_bom.ply"
 accept extent_overflow_from_two_far_points "$dir/overflow.xyz"
 accept ply_big_endian_double_normals_colours "$dir/big_endian_double.ply" --initialization=input_normals
 accept k_equal_to_n_minus_1 "$dir/plain.xyz" --k=1499 --max_iters=2
+accept pcd_organized_with_nan_points "$dir/organized.pcd"
 # Refused inputs.
 refuse xyz_colours_as_normals 1 denoise "$dir/colours.xyz" -o out.ply --initialization=input_normals
 refuse extent_overflows 1 denoise "$dir/overflow.xyz" -o out.ply --far_factor=0
@@ -121,6 +130,10 @@ refuse input_is_a_directory 1 denoise "$dir/folder.xyz" -o out.ply
 refuse empty_input_name 1 denoise "" -o out.ply
 refuse ply_claims_4e9_vertices 1 denoise "$dir/huge_count.ply" -o out.ply
 refuse ply_count_past_body 1 denoise "$dir/count_past_body.ply" -o out.ply
+refuse pcd_claims_4e9_points 1 denoise "$dir/huge_count.pcd" -o out.ply
+refuse pcd_every_point_nan 1 denoise "$dir/all_nan.pcd" -o out.ply
+refuse pcd_corrupt_compression 1 denoise "$dir/corrupt_lzf.pcd" -o out.ply
+refuse pcd_output 1 denoise "$dir/organized.pcd" -o out.pcd
 refuse ply_binary_nan 1 denoise "$dir/nan_binary.ply" -o out.ply
 refuse ply_list_past_body 1 denoise "$dir/list_past_body.ply" -o out.ply
 refuse ply_unknown_format 1 denoise "$dir/unknown_format.ply" -o out.ply

@@ -1,7 +1,7 @@
-// Fuzz target: the point-cloud reader of one format (LPD_FUZZ_FORMAT: "xyz", "ply", "off" or
-// "obj") on arbitrary bytes. Refusing a file with std::runtime_error is the expected outcome;
-// any other exception, a crash, a sanitizer report, a non-finite coordinate or attribute
-// arrays of the wrong length is a finding.
+// Fuzz target: the point-cloud reader of one format (LPD_FUZZ_FORMAT: "xyz", "ply", "off",
+// "obj", "las" or "pcd") on arbitrary bytes. Refusing a file with std::runtime_error is the
+// expected outcome; any other exception, a crash, a sanitizer report, a non-finite
+// coordinate or attribute arrays of the wrong length is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>

@@ -1,0 +1,212 @@
+// PCD files: the three body layouts built byte by byte here, colours, normals, typed and
+// multi-value fields, organized clouds with NaN points, and one-line errors on bad files.
+#include "io/pcd_io.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/point_cloud_io.h"
+
+namespace lpd::io {
+namespace {
+
+PointCloud Read(const std::string& text) {
+  std::istringstream in(text);
+  return ReadPointCloud(in, "pcd", "cloud.pcd");
+}
+
+// The message ReadPointCloud throws on `text` ("" if none).
+std::string ReadError(const std::string& text) {
+  try {
+    Read(text);
+  } catch (const std::runtime_error& error) {
+    return error.what();
+  }
+  return "";
+}
+
+template <typename T>
+void Append(T value, std::string* bytes) {  // little endian, as on the test machines
+  char raw[sizeof(T)];
+  std::memcpy(raw, &value, sizeof(T));
+  bytes->append(raw, sizeof(T));
+}
+
+// A literal-only LZF stream of `data`: runs of at most 32 bytes, each after a control byte
+// holding its length minus one (the format liblzf decompresses).
+std::string LiteralLzf(const std::string& data) {
+  std::string packed;
+  for (size_t start = 0; start < data.size(); start += 32) {
+    const size_t run = std::min<size_t>(32, data.size() - start);
+    packed.push_back(static_cast<char>(run - 1));
+    packed.append(data, start, run);
+  }
+  return packed;
+}
+
+// Three points; the second is an organized cloud's "no return".
+constexpr float kX[3] = {1.5f, std::numeric_limits<float>::quiet_NaN(), -2.25f};
+constexpr float kY[3] = {2.0f, 0.0f, 0.125f};
+constexpr float kZ[3] = {-3.0f, 0.0f, 7.0f};
+constexpr uint32_t kRgb[3] = {0x00FF8001u, 0, 0xFF0A0B0Cu};  // 0xAARRGGBB
+constexpr uint16_t kRing[3] = {7, 0, 65535};
+constexpr int8_t kTag[3][2] = {{-1, 2}, {0, 0}, {127, -128}};
+
+const char kHeader[] =
+    "# .PCD v0.7 - Point Cloud Data file format\n"
+    "VERSION 0.7\n"
+    "FIELDS x y z rgb ring _ tag\n"
+    "SIZE 4 4 4 4 2 2 1\n"
+    "TYPE F F F F U U I\n"
+    "COUNT 1 1 1 1 1 1 2\n"
+    "WIDTH 3\n"
+    "HEIGHT 1\n"
+    "VIEWPOINT 0 0 0 1 0 0 0\n"
+    "POINTS 3\n";
+
+void ExpectTheThreePoints(const PointCloud& cloud) {
+  ASSERT_EQ(cloud.points.size(), 2u);
+  EXPECT_EQ(cloud.skipped_points, 1u);
+  EXPECT_EQ(cloud.points[0], energy::Point3(1.5, 2.0, -3.0));
+  EXPECT_EQ(cloud.points[1], energy::Point3(-2.25, 0.125, 7.0));
+  EXPECT_TRUE(cloud.normals.empty());
+  std::vector<std::string> names;
+  for (const PointAttribute& a : cloud.attributes) names.push_back(a.name + ":" + a.type);
+  EXPECT_EQ(names, (std::vector<std::string>{"ring:ushort", "tag_0:char", "tag_1:char",
+                                             "red:uchar", "green:uchar", "blue:uchar"}));
+  EXPECT_EQ(cloud.FindAttribute("ring")->values, (std::vector<double>{7, 65535}));
+  EXPECT_EQ(cloud.FindAttribute("tag_0")->values, (std::vector<double>{-1, 127}));
+  EXPECT_EQ(cloud.FindAttribute("tag_1")->values, (std::vector<double>{2, -128}));
+  EXPECT_EQ(cloud.FindAttribute("red")->values, (std::vector<double>{0xFF, 0x0A}));
+  EXPECT_EQ(cloud.FindAttribute("green")->values, (std::vector<double>{0x80, 0x0B}));
+  EXPECT_EQ(cloud.FindAttribute("blue")->values, (std::vector<double>{0x01, 0x0C}));
+}
+
+// The rgb field as PCL writes it in ascii: the float whose bits are the colour.
+std::string PackedFloatText(uint32_t bits) {
+  float value;
+  std::memcpy(&value, &bits, 4);
+  std::ostringstream out;
+  out.precision(9);
+  out << value;
+  return out.str();
+}
+
+TEST(PcdIo, ReadsAsciiBinaryAndCompressedBodiesAlike) {
+  std::string ascii = std::string(kHeader) + "DATA ascii\n";
+  for (int i = 0; i < 3; ++i) {
+    std::ostringstream line;
+    line.precision(9);
+    line << kX[i] << ' ' << kY[i] << ' ' << kZ[i] << ' ' << PackedFloatText(kRgb[i]) << ' '
+         << kRing[i] << " 0 " << int{kTag[i][0]} << ' ' << int{kTag[i][1]} << "\r\n";
+    ascii += line.str();
+  }
+  ExpectTheThreePoints(Read(ascii));
+
+  std::string records;
+  for (int i = 0; i < 3; ++i) {
+    Append(kX[i], &records);
+    Append(kY[i], &records);
+    Append(kZ[i], &records);
+    Append(kRgb[i], &records);
+    Append(kRing[i], &records);
+    Append(uint16_t{0xBEEF}, &records);  // padding
+    Append(kTag[i][0], &records);
+    Append(kTag[i][1], &records);
+  }
+  ExpectTheThreePoints(Read(std::string(kHeader) + "DATA binary\n" + records));
+
+  // binary_compressed stores each field's values of all points one after the other.
+  std::string columns;
+  for (int i = 0; i < 3; ++i) Append(kX[i], &columns);
+  for (int i = 0; i < 3; ++i) Append(kY[i], &columns);
+  for (int i = 0; i < 3; ++i) Append(kZ[i], &columns);
+  for (int i = 0; i < 3; ++i) Append(kRgb[i], &columns);
+  for (int i = 0; i < 3; ++i) Append(kRing[i], &columns);
+  for (int i = 0; i < 3; ++i) Append(uint16_t{0xBEEF}, &columns);
+  for (int i = 0; i < 3; ++i) {
+    Append(kTag[i][0], &columns);
+    Append(kTag[i][1], &columns);
+  }
+  const std::string packed = LiteralLzf(columns);
+  std::string compressed = std::string(kHeader) + "DATA binary_compressed\n";
+  Append(static_cast<uint32_t>(packed.size()), &compressed);
+  Append(static_cast<uint32_t>(columns.size()), &compressed);
+  ExpectTheThreePoints(Read(compressed + packed));
+}
+
+TEST(PcdIo, FiniteNormalsAreNormalsAndOthersStayAttributes) {
+  const std::string head =
+      "FIELDS x y z normal_x normal_y normal_z curvature\nSIZE 8 8 8 4 4 4 4\n"
+      "TYPE F F F F F F F\nWIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n";
+  const PointCloud cloud = Read(head + "0 0 0 0 0 1 0.5\n1 2 3 1 0 0 0.25\n");
+  ASSERT_EQ(cloud.normals.size(), 2u);
+  EXPECT_EQ(cloud.normals[1], energy::Point3(1, 0, 0));
+  EXPECT_EQ(cloud.FindAttribute("curvature")->type, "float");
+  const PointCloud partial = Read(head + "0 0 0 nan nan nan nan\n1 2 3 1 0 0 0.25\n");
+  EXPECT_TRUE(partial.normals.empty());
+  ASSERT_NE(partial.FindAttribute("normal_x"), nullptr);
+  EXPECT_TRUE(std::isnan(partial.FindAttribute("normal_x")->values[0]));
+}
+
+TEST(PcdIo, BadFilesGiveOneLineErrors) {
+  const std::string fields = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n";
+  auto error_of = [](const std::string& text) { return ReadError(text); };
+  EXPECT_NE(error_of("").find("the file is empty"), std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS 1\n").find("before its DATA line"), std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS 1\nDATA zip\n").find("DATA must be ascii"),
+            std::string::npos);
+  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4\nTYPE F F F\nPOINTS 1\nDATA ascii\n1 2 3\n")
+                .find("one value per field"),
+            std::string::npos);
+  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4 2\nTYPE F F F\nPOINTS 1\nDATA ascii\n1 2 3\n")
+                .find("field 'z' has TYPE F and SIZE 2"),
+            std::string::npos);
+  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4 4\nTYPE F F U\nPOINTS 1\nDATA ascii\n1 2 3\n")
+                .find("field 'z' must be of TYPE F"),
+            std::string::npos);
+  EXPECT_NE(error_of("FIELDS x y\nSIZE 4 4\nTYPE F F\nPOINTS 1\nDATA ascii\n1 2\n")
+                .find("no x, y and z fields"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "WIDTH 2\nHEIGHT 2\nPOINTS 3\nDATA ascii\n").find("WIDTH x HEIGHT"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS 2\nDATA ascii\n1 2 3\n").find("ends after 1 of its 2"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\n1 2\n").find("expected 3 values, got 2"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\n1 2 abc\n").find("'abc' is not a number"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\n1 2 inf\n").find("infinite coordinate"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\nnan 2 3\n").find("every point has a NaN"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "POINTS -1\nDATA ascii\n").find("POINTS must be a whole number"),
+            std::string::npos);
+  // A header that claims 4e9 points on a 12-byte body: nothing is allocated for them.
+  EXPECT_NE(error_of(fields + "POINTS 4000000000\nDATA binary\n123456789012")
+                .find("the file ends inside its binary points (12 of 48000000000 bytes)"),
+            std::string::npos);
+  std::string sizes;
+  Append(uint32_t{4}, &sizes);
+  Append(uint32_t{12}, &sizes);
+  EXPECT_NE(error_of(fields + "POINTS 1\nDATA binary_compressed\n" + sizes + "\x1f\x01\x02\x03")
+                .find("corrupt"),
+            std::string::npos);
+  std::string huge;
+  Append(uint32_t{4}, &huge);
+  Append(uint32_t{1200000}, &huge);
+  EXPECT_NE(error_of(fields + "POINTS 100000\nDATA binary_compressed\n" + huge + "abcd")
+                .find("cannot hold 1200000"),
+            std::string::npos);
+  EXPECT_EQ(error_of("x\n").find("cloud.pcd:1: not a PCD header line"), 0u);
+}
+
+}  // namespace
+}  // namespace lpd::io
