@@ -27,8 +27,8 @@
 
 DEFINE_string(output, "", "output file (.ply with normals and indicators, or .xyz); also -o");
 DEFINE_string(input_format, "",
-              "format of INPUT (xyz, ply, las, pcd, off, obj) when its extension does not say it; needed "
-              "for '-', standard input");
+              "format of INPUT (xyz, ply, las, pcd, off, obj) when its extension does not say "
+              "it; needed for '-', standard input");
 DEFINE_string(output_format, "",
               "format of OUTPUT (ply, xyz) when its extension does not say it; needed for "
               "'-o -', standard output (the summary then goes to stderr)");

@@ -504,6 +504,8 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
     }
     rows = std::move(kept_rows);
     repeats += near_repeats;
+    // An exact repeat of a near repeat follows it to its representative.
+    for (int& f : first) f = first[f];
   }
   const size_t fewest = (options.choose_k ? options.neighborhood.min_k : options.problem.k) + 1;
   if (repeats > 0 && rows.size() < fewest) {

@@ -150,9 +150,12 @@ TEST(NearRepeats, ACloudGivenTwiceWithinAHairIsDenoisedAsTheSingleCopy) {
   PointList twice = single;
   const double jitter = 1e-4;  // the spacing is about 0.065
   const std::vector<int> copied = AppendJitteredCopies(3000, jitter, 12, &twice);
+  twice.push_back(twice[3000]);  // an exact repeat of a near repeat
   const DenoiseResult result = DenoisePointSet(twice, options);
   EXPECT_EQ(result.num_near_repeats, 3000);
-  EXPECT_EQ(result.num_duplicates, 0);
+  EXPECT_EQ(result.num_duplicates, 1);
+  EXPECT_EQ(result.projected.back(), result.projected[3000]);
+  EXPECT_EQ(result.kept.back(), result.kept[3000]);
   EXPECT_EQ(result.neighborhood.k, alone.neighborhood.k);
   EXPECT_EQ(result.summary.lambda, alone.summary.lambda);
   for (size_t i = 0; i < single.size(); ++i) {
