@@ -211,6 +211,14 @@ Destinations Route(const std::string& name, const PcdHeader& header, PointCloud*
   Destinations to;
   static const char* kAxes[3] = {"x", "y", "z"};
   static const char* kNormals[3] = {"normal_x", "normal_y", "normal_z"};
+  // Normals only with all three components; a lone normal_x stays an attribute.
+  int normal_components = 0;
+  for (const char* component : kNormals) {
+    normal_components += std::any_of(header.fields.begin(), header.fields.end(),
+                                     [component](const PcdField& field) {
+                                       return field.name == component && field.count == 1;
+                                     });
+  }
   for (const PcdField& field : header.fields) {
     for (int c = 0; c < field.count; ++c) {
       const int value = static_cast<int>(value_fields->size());
@@ -223,7 +231,7 @@ Destinations Route(const std::string& name, const PcdHeader& header, PointCloud*
             if (field.type != 'F') Fail(name, 0, "field '" + field.name + "' must be of TYPE F");
             to.xyz[a] = value;
             placed = true;
-          } else if (field.name == kNormals[a]) {
+          } else if (field.name == kNormals[a] && normal_components == 3) {
             to.normal[a] = value;
             placed = true;
           }
@@ -245,9 +253,14 @@ Destinations Route(const std::string& name, const PcdHeader& header, PointCloud*
     Fail(name, 0, "the header has no x, y and z fields");
   }
   if (to.colour >= 0) {
+    // Named after the packed field when the file has fields called red, green or blue too.
+    std::string prefix;
+    for (const char* channel : {"red", "green", "blue", "alpha"}) {
+      if (cloud->FindAttribute(channel)) prefix = to.alpha ? "rgba_" : "rgb_";
+    }
     for (const char* channel : {"red", "green", "blue", "alpha"}) {
       if (std::string(channel) == "alpha" && !to.alpha) break;
-      cloud->attributes.push_back({channel, "uchar", {}});
+      cloud->attributes.push_back({prefix + channel, "uchar", {}});
     }
   }
   return to;

@@ -8,7 +8,8 @@
 // little-endian records) or binary_compressed (the fields one after the other, LZF-
 // compressed). x, y and z are required; normal_x, normal_y and normal_z become the normals
 // when all are finite; rgb and rgba (colours packed into 4 bytes, as PCL writes them) become
-// the attributes red, green, blue (and alpha) as uchar; every other field becomes an
+// the attributes red, green, blue (and alpha) as uchar (rgb_red, ... where the file has a
+// field called red, green, blue or alpha too); every other field becomes an
 // attribute of its type (a field of COUNT c > 1 gives NAME_0 .. NAME_{c-1}; 8-byte integers
 // are read as doubles; the '_' padding fields of PCL are skipped). A point whose x, y or z is
 // NaN, an organized cloud's mark of "no return", is left out (PointCloud::skipped_points

@@ -154,6 +154,18 @@ TEST(PcdIo, FiniteNormalsAreNormalsAndOthersStayAttributes) {
   EXPECT_TRUE(partial.normals.empty());
   ASSERT_NE(partial.FindAttribute("normal_x"), nullptr);
   EXPECT_TRUE(std::isnan(partial.FindAttribute("normal_x")->values[0]));
+  const PointCloud lone = Read(
+      "FIELDS x y z normal_x\nSIZE 4 4 4 4\nTYPE F F F F\nPOINTS 1\nDATA ascii\n1 2 3 0.5\n");
+  EXPECT_TRUE(lone.normals.empty());
+  ASSERT_NE(lone.FindAttribute("normal_x"), nullptr);
+  EXPECT_EQ(lone.FindAttribute("normal_x")->values, std::vector<double>{0.5});
+  // Packed colours beside a field called red keep apart from it.
+  const PointCloud both = Read(
+      "FIELDS x y z red rgb\nSIZE 4 4 4 4 4\nTYPE F F F F U\nPOINTS 1\nDATA ascii\n"
+      "1 2 3 0.25 16711680\n");
+  EXPECT_EQ(both.FindAttribute("red")->values, std::vector<double>{0.25});
+  ASSERT_NE(both.FindAttribute("rgb_red"), nullptr);
+  EXPECT_EQ(both.FindAttribute("rgb_red")->values, std::vector<double>{255});
 }
 
 TEST(PcdIo, BadFilesGiveOneLineErrors) {
