@@ -25,13 +25,14 @@
 #include "cli/denoise_state_file.h"
 #include "solvers/denoise_point_set.h"
 
-DEFINE_string(output, "", "output file (.ply with normals and indicators, or .xyz); also -o");
+DEFINE_string(output, "",
+              "output file (.ply or .pcd with normals and indicators, .las, or .xyz); also -o");
 DEFINE_string(input_format, "",
               "format of INPUT (xyz, ply, las, pcd, off, obj) when its extension does not say "
               "it; needed for '-', standard input");
 DEFINE_string(output_format, "",
-              "format of OUTPUT (ply, xyz) when its extension does not say it; needed for "
-              "'-o -', standard output (the summary then goes to stderr)");
+              "format of OUTPUT (ply, pcd, las, xyz) when its extension does not say it; needed "
+              "for '-o -', standard output (the summary then goes to stderr)");
 DEFINE_bool(overwrite, false, "replace OUTPUT (and the --save_state file) if it already exists");
 DEFINE_string(save_state, "",
               "after the iterations, save the optimizer's state (H, T, L, M, S, the k-NN "
@@ -222,6 +223,7 @@ DenoiseInput LoadInput(const std::vector<std::string>& arguments) {
     input.normals = std::move(cloud.normals);
     input.properties.attributes = std::move(cloud.attributes);
     input.properties.las = std::move(cloud.las);
+    input.properties.float_coordinates = cloud.float_coordinates;
     return input;
   }
   input.is_built_in = true;
@@ -371,6 +373,11 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
           "--tile_points cannot be combined with --initialization=input_normals (tiles read "
           "points only)");
     }
+    const std::string format = FLAGS_output.empty() ? "ply" : io::OutputFormat(FLAGS_output, "");
+    if (format == "las" || format == "pcd") {
+      throw std::invalid_argument("--tile_points writes its output point by point: give a .ply "
+                                  "or .xyz output (LAS and PCD are written whole)");
+    }
     return RunTiled(arguments, options, tiling);
   }
   const Clock::time_point start = Clock::now();
@@ -405,7 +412,9 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
       FLAGS_output.empty() ? "ply" : io::OutputFormat(FLAGS_output, FLAGS_output_format);
   io::PointCloud cloud = MakeOutputCloud(
       result, input.properties,
-      format == "ply" ? OutputKind::kPly : format == "las" ? OutputKind::kLas : OutputKind::kText);
+      format == "ply" || format == "pcd" ? OutputKind::kPly
+      : format == "las"                  ? OutputKind::kLas
+                                         : OutputKind::kText);
   cloud.comments = RunHeaderComments(run, options, result);
   if (!FLAGS_output.empty()) {
     io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite, FLAGS_output_format);

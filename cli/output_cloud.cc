@@ -29,6 +29,7 @@ io::PointCloud MakeOutputCloud(const solvers::DenoiseResult& result, const io::P
     if (result.kept[i]) rows.push_back(i);
   }
   io::PointCloud cloud;
+  cloud.float_coordinates = input.float_coordinates;
   for (size_t i : rows) cloud.points.push_back(result.projected[i]);
   for (const io::PointAttribute& attribute : input.attributes) {
     io::PointAttribute kept{attribute.name, attribute.type, {}};

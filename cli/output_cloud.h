@@ -15,7 +15,7 @@ namespace lpd::cli {
 const std::vector<const char*>& LpdFieldNames();
 
 enum class OutputKind {
-  kPly,   // the normals and lpd's fields beside the input's attributes
+  kPly,   // the normals and lpd's fields beside the input's attributes (PLY, PCD)
   kText,  // the input's attributes only (XYZ columns)
   kLas,   // the input's fields, with class 7 (low noise, as PDAL marks outliers) on every
           // flagged point that is in the output (--outliers=mark)

@@ -398,11 +398,116 @@ void DecodeRecords(const std::string& name, const std::vector<unsigned char>& by
 
 }  // namespace
 
+void WritePcd(std::ostream& out, const PointCloud& cloud, const std::string& name) {
+  if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
+  struct Column {
+    std::string name;
+    char type;
+    int size;
+    const std::vector<double>* values = nullptr;  // an attribute's, else written below
+  };
+  const int coordinate_size = cloud.float_coordinates ? 4 : 8;
+  std::vector<Column> columns = {{"x", 'F', coordinate_size}, {"y", 'F', coordinate_size},
+                                 {"z", 'F', coordinate_size}};
+  const bool with_normals = !cloud.normals.empty();
+  if (with_normals) {
+    for (const char* component : {"normal_x", "normal_y", "normal_z"}) {
+      columns.push_back({component, 'F', 4});
+    }
+  }
+  // The colour channels, packed as PCL packs them.
+  auto uchar_attribute = [&cloud](const char* channel) {
+    const PointAttribute* attribute = cloud.FindAttribute(channel);
+    return attribute && attribute->type == "uchar" ? attribute : nullptr;
+  };
+  std::vector<const PointAttribute*> channels = {
+      uchar_attribute("red"), uchar_attribute("green"), uchar_attribute("blue")};
+  if (std::find(channels.begin(), channels.end(), nullptr) != channels.end()) channels.clear();
+  if (!channels.empty() && uchar_attribute("alpha")) channels.push_back(uchar_attribute("alpha"));
+  const bool alpha = channels.size() == 4;
+  if (!channels.empty()) columns.push_back({alpha ? "rgba" : "rgb", alpha ? 'U' : 'F', 4});
+  for (const PointAttribute& attribute : cloud.attributes) {
+    if (std::find(channels.begin(), channels.end(), &attribute) != channels.end()) continue;
+    const std::string& type = attribute.type;
+    Column column{attribute.name, 'F', 8, &attribute.values};
+    if (type == "char" || type == "int8") column = {attribute.name, 'I', 1, &attribute.values};
+    if (type == "uchar" || type == "uint8") column = {attribute.name, 'U', 1, &attribute.values};
+    if (type == "short" || type == "int16") column = {attribute.name, 'I', 2, &attribute.values};
+    if (type == "ushort" || type == "uint16") column = {attribute.name, 'U', 2, &attribute.values};
+    if (type == "int" || type == "int32") column = {attribute.name, 'I', 4, &attribute.values};
+    if (type == "uint" || type == "uint32") column = {attribute.name, 'U', 4, &attribute.values};
+    if (type == "float" || type == "float32") column = {attribute.name, 'F', 4, &attribute.values};
+    columns.push_back(column);
+  }
+  const size_t n = cloud.points.size();
+  out << "# .PCD v0.7 - Point Cloud Data file format (written by lpd)\nVERSION 0.7\nFIELDS";
+  for (const Column& column : columns) out << ' ' << column.name;
+  out << "\nSIZE";
+  for (const Column& column : columns) out << ' ' << column.size;
+  out << "\nTYPE";
+  for (const Column& column : columns) out << ' ' << column.type;
+  out << "\nCOUNT";
+  for (size_t c = 0; c < columns.size(); ++c) out << " 1";
+  out << "\nWIDTH " << n << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << n
+      << "\nDATA binary\n";
+  std::vector<char> record;
+  auto put = [&record](auto value) {
+    char bytes[sizeof(value)];
+    std::memcpy(bytes, &value, sizeof(value));
+    record.insert(record.end(), bytes, bytes + sizeof(value));
+  };
+  // An integer value rounded and clamped to its type's range (NaN gives 0).
+  auto clamped = [](double value, double lowest, double highest) {
+    if (std::isnan(value)) return 0.0;
+    return std::min(highest, std::max(lowest, std::round(value)));
+  };
+  for (size_t i = 0; i < n; ++i) {
+    record.clear();
+    for (const Column& column : columns) {
+      double value = 0.0;
+      if (column.values) {
+        value = (*column.values)[i];
+      } else if (column.name.size() == 1) {  // x, y, z
+        value = cloud.points[i][column.name[0] - 'x'];
+      } else if (column.name.rfind("normal_", 0) == 0) {
+        value = cloud.normals[i][column.name.back() - 'x'];
+      } else {  // rgb or rgba
+        uint32_t bits = 0;
+        const int shifts[4] = {16, 8, 0, 24};
+        for (size_t c = 0; c < channels.size(); ++c) {
+          bits |= static_cast<uint32_t>(clamped(channels[c]->values[i], 0, 255)) << shifts[c];
+        }
+        put(bits);
+        continue;
+      }
+      if (column.type == 'F') {
+        column.size == 4 ? put(static_cast<float>(value)) : put(value);
+      } else if (column.type == 'I') {
+        switch (column.size) {
+          case 1: put(static_cast<int8_t>(clamped(value, INT8_MIN, INT8_MAX))); break;
+          case 2: put(static_cast<int16_t>(clamped(value, INT16_MIN, INT16_MAX))); break;
+          default: put(static_cast<int32_t>(clamped(value, INT32_MIN, INT32_MAX))); break;
+        }
+      } else {
+        switch (column.size) {
+          case 1: put(static_cast<uint8_t>(clamped(value, 0, UINT8_MAX))); break;
+          case 2: put(static_cast<uint16_t>(clamped(value, 0, UINT16_MAX))); break;
+          default: put(static_cast<uint32_t>(clamped(value, 0, UINT32_MAX))); break;
+        }
+      }
+    }
+    out.write(record.data(), static_cast<std::streamsize>(record.size()));
+  }
+  if (!out) throw std::runtime_error(name + ": write error");
+}
+
 PointCloud ReadPcd(const std::string& name, std::istream& in) {
   const PcdHeader header = ReadHeader(name, in);
   PointCloud cloud;
   std::vector<PcdField> value_fields;
   const Destinations to = Route(name, header, &cloud, &value_fields);
+  cloud.float_coordinates = value_fields[to.xyz[0]].size == 4 &&
+                            value_fields[to.xyz[1]].size == 4 && value_fields[to.xyz[2]].size == 4;
   energy::PointList normals;
   const uint64_t body = header.points * header.record_size;
   if (header.data == PcdData::kAscii) {

@@ -1,5 +1,5 @@
-// lpd: reading PCD point clouds (the Point Cloud Library's format, v0.5-0.7), written by the
-// project: Debian's PCL (libpcl-dev) would bring hundreds of megabytes of dependencies for
+// lpd: reading and writing PCD point clouds (the Point Cloud Library's format, v0.5-0.7), by
+// the project: Debian's PCL (libpcl-dev) would bring hundreds of megabytes of dependencies for
 // one header and three body layouts. The LZF blocks of binary_compressed files are
 // decompressed by liblzf.
 //
@@ -18,11 +18,19 @@
 #define LPD_IO_PCD_IO_H_
 
 #include <istream>
+#include <ostream>
 #include <string>
 
 namespace lpd::io {
 
 struct PointCloud;
+
+// Writes `cloud` to `out` as binary PCD v0.7: x, y, z (TYPE F, SIZE 4 when the cloud was read
+// with float coordinates, else 8), normal_x, normal_y, normal_z (F 4) when it has normals,
+// red, green and blue as PCL's packed rgb (F 4; with alpha, rgba U 4) when all are uchar
+// attributes, and every other attribute with its type. Throws std::runtime_error on a write
+// error.
+void WritePcd(std::ostream& out, const PointCloud& cloud, const std::string& name);
 
 // Reads a PCD file from `in` (no seeking, so pipes work); `name` stands for it in messages.
 // Throws std::runtime_error "NAME[:LINE]: reason" on anything malformed, truncated or

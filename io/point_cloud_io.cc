@@ -747,21 +747,20 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
 
 std::string OutputFormat(const std::string& path, const std::string& format) {
   const std::string chosen = format.empty() ? FileExtension(path) : format;
-  if (chosen == "ply" || chosen == "xyz" || chosen == "txt" || chosen == "las") return chosen;
-  if (chosen == "pcd") {
-    throw std::runtime_error("cannot write '" + path + "': lpd reads PCD but does not write "
-                             "it; write .ply (PCL reads it with pcl::io::loadPLYFile, or "
-                             "converts it with pcl_ply2pcd)");
+  if (chosen == "ply" || chosen == "xyz" || chosen == "txt" || chosen == "las" ||
+      chosen == "pcd") {
+    return chosen;
   }
   if (chosen == "laz") {
     throw std::runtime_error("cannot write '" + path + "': LAZ (compressed LAS) is not "
                              "supported; write .las and compress it with `laszip`");
   }
   if (path == kStandardStream && format.empty()) {
-    throw std::runtime_error("writing standard output ('-') needs --output_format (ply or xyz)");
+    throw std::runtime_error("writing standard output ('-') needs --output_format (ply, xyz, las "
+                             "or pcd)");
   }
-  throw std::runtime_error("cannot write '" + path + "': the output format must be ply, xyz or "
-                           "txt, got '" + chosen + "'");
+  throw std::runtime_error("cannot write '" + path + "': the output format must be ply, xyz, "
+                           "txt, las or pcd, got '" + chosen + "'");
 }
 
 PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
@@ -771,9 +770,9 @@ PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
     : count_(count), with_normals_(with_normals) {
   const std::string chosen = OutputFormat(path, format);
   ply_ = chosen == "ply";
-  if (chosen == "las") {
-    throw std::runtime_error("cannot write '" + path + "' point by point: LAS is written "
-                             "whole (WritePointCloud); write PLY or XYZ here");
+  if (chosen == "las" || chosen == "pcd") {
+    throw std::runtime_error("cannot write '" + path + "' point by point: LAS and PCD are "
+                             "written whole (WritePointCloud); write PLY or XYZ here");
   }
   for (const auto& [name, type] : fields) {
     if (PlyTypeSize(type) == 0) {
@@ -878,9 +877,14 @@ void PointWriter::Commit() {
 
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite,
                      const std::string& format) {
-  if (OutputFormat(path, format) == "las") {
+  const std::string chosen = OutputFormat(path, format);
+  if (chosen == "las" || chosen == "pcd") {
     AtomicOutputFile file(path, overwrite);
-    WriteLas(file.stream(), cloud, path);
+    if (chosen == "las") {
+      WriteLas(file.stream(), cloud, path);
+    } else {
+      WritePcd(file.stream(), cloud, path);
+    }
     file.Commit();
     return;
   }

@@ -47,6 +47,8 @@ struct PointCloud {
   std::shared_ptr<const LasLayout> las;
   // Points of the file left out: a PCD file's points with a NaN coordinate (pcd_io.h).
   size_t skipped_points = 0;
+  // The file gave x, y, z as 4-byte floats (PCD); a PCD written from the cloud keeps them so.
+  bool float_coordinates = false;
 
   // The attribute called `name`, or nullptr.
   const PointAttribute* FindAttribute(const std::string& name) const;
@@ -74,13 +76,13 @@ energy::PointList ReadPoints(const std::string& path);
 // with the checks and errors of ReadPointCloud.
 void ForEachPoint(const std::string& path, const std::function<void(const energy::Point3&)>& visit);
 
-// Writes `cloud` to `path` (".ply" or ".xyz"/".txt", or `format`; "-" is standard output and
-// needs `format`); throws std::runtime_error on failure.
+// Writes `cloud` to `path` (".ply", ".xyz"/".txt", ".las" or ".pcd", or `format`; "-" is
+// standard output and needs `format`); throws std::runtime_error on failure.
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite,
                      const std::string& format = "");
 
 // The format written to `path`: `format` when given, else the extension; throws
-// std::runtime_error naming the problem if it is not ply, xyz, txt or las.
+// std::runtime_error naming the problem if it is not ply, xyz, txt, las or pcd.
 std::string OutputFormat(const std::string& path, const std::string& format);
 
 // Writes a point set point by point in WritePointCloud's layout: binary PLY with x y z

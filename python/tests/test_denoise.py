@@ -199,3 +199,26 @@ def test_the_gil_is_released_during_the_solve():
         ticker.join()
     # a thread waiting for the GIL would tick once per iteration at best
     assert len(ticks) > 20
+
+
+def test_the_cli_reads_and_writes_pcd_as_open3d_does(tmp_path, lpd_binary):
+    o3d = pytest.importorskip("open3d")
+    points = noisy_box(3000, 0.005, seed=6)
+    colours = np.random.default_rng(7).integers(0, 256, (3000, 3))
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(points))
+    cloud.colors = o3d.utility.Vector3dVector(colours / 255.0)
+    for name, options in [("ascii", {"write_ascii": True}), ("binary", {}),
+                          ("compressed", {"compressed": True})]:
+        source = tmp_path / f"{name}.pcd"
+        assert o3d.io.write_point_cloud(str(source), cloud, **options)
+        output = tmp_path / f"{name}_out.pcd"
+        subprocess.run([lpd_binary, "denoise", str(source), "-o", str(output), "--quiet"],
+                       check=True, capture_output=True)
+        written = o3d.io.read_point_cloud(str(output))  # Open3D reads what lpd wrote
+        kept = len(written.points)
+        assert 2900 < kept <= 3000 and written.has_normals()
+        # each output point keeps the colour of the input point nearest to it
+        tree = o3d.geometry.KDTreeFlann(cloud)
+        nearest = [tree.search_knn_vector_3d(p, 1)[1][0] for p in np.asarray(written.points)]
+        agree = np.all(np.round(np.asarray(written.colors) * 255) == colours[nearest], axis=1)
+        assert agree.mean() > 0.95

@@ -168,6 +168,44 @@ TEST(PcdIo, FiniteNormalsAreNormalsAndOthersStayAttributes) {
   EXPECT_EQ(both.FindAttribute("rgb_red")->values, std::vector<double>{255});
 }
 
+// What WritePcd writes, ReadPcd reads back: float coordinates, normals, packed colours with
+// alpha and typed attributes unchanged.
+TEST(PcdIo, WrittenCloudsReadBackUnchanged) {
+  PointCloud cloud;
+  cloud.float_coordinates = true;
+  cloud.points = {{1.5, -2.25, 3.0}, {0.125, 4.0, -5.5}};
+  cloud.normals = {{0, 0, 1}, {0.6, 0.8, 0}};
+  cloud.attributes = {{"intensity", "ushort", {7, 65535}},
+                      {"red", "uchar", {255, 1}},
+                      {"green", "uchar", {128, 2}},
+                      {"blue", "uchar", {0, 3}},
+                      {"alpha", "uchar", {255, 4}},
+                      {"score", "double", {0.1, -1e300}},
+                      {"tag", "char", {-128, 127}}};
+  std::ostringstream out;
+  WritePcd(out, cloud, "out.pcd");
+  const PointCloud back = Read(out.str());
+  EXPECT_TRUE(back.float_coordinates);
+  EXPECT_EQ(back.points, cloud.points);
+  ASSERT_EQ(back.normals.size(), 2u);
+  EXPECT_NEAR((back.normals[1] - cloud.normals[1]).norm(), 0.0, 1e-7);
+  for (const PointAttribute& attribute : cloud.attributes) {
+    const PointAttribute* read = back.FindAttribute(attribute.name);
+    ASSERT_NE(read, nullptr) << attribute.name;
+    EXPECT_EQ(read->type, attribute.type) << attribute.name;
+    EXPECT_EQ(read->values, attribute.values) << attribute.name;
+  }
+  EXPECT_NE(out.str().find("FIELDS x y z normal_x normal_y normal_z rgba intensity score tag\n"
+                           "SIZE 4 4 4 4 4 4 4 2 8 1\nTYPE F F F F F F U U F I\n"),
+            std::string::npos);
+  // Coordinates that did not come as floats are written as doubles.
+  cloud.float_coordinates = false;
+  cloud.points[0].x() = 0.1;
+  std::ostringstream doubles;
+  WritePcd(doubles, cloud, "out.pcd");
+  EXPECT_EQ(Read(doubles.str()).points, cloud.points);
+}
+
 TEST(PcdIo, BadFilesGiveOneLineErrors) {
   const std::string fields = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n";
   auto error_of = [](const std::string& text) { return ReadError(text); };
