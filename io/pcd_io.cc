@@ -437,6 +437,11 @@ void WritePcd(std::ostream& out, const PointCloud& cloud, const std::string& nam
     if (type == "int" || type == "int32") column = {attribute.name, 'I', 4, &attribute.values};
     if (type == "uint" || type == "uint32") column = {attribute.name, 'U', 4, &attribute.values};
     if (type == "float" || type == "float32") column = {attribute.name, 'F', 4, &attribute.values};
+    // Field names are unique: an attribute called normal_x beside the normals, say, is renamed.
+    while (std::any_of(columns.begin(), columns.end(),
+                       [&column](const Column& other) { return other.name == column.name; })) {
+      column.name = "input_" + column.name;
+    }
     columns.push_back(column);
   }
   const size_t n = cloud.points.size();

@@ -198,6 +198,15 @@ TEST(PcdIo, WrittenCloudsReadBackUnchanged) {
   EXPECT_NE(out.str().find("FIELDS x y z normal_x normal_y normal_z rgba intensity score tag\n"
                            "SIZE 4 4 4 4 4 4 4 2 8 1\nTYPE F F F F F F U U F I\n"),
             std::string::npos);
+  // An attribute named like a field lpd writes keeps its values under another name.
+  PointCloud named = cloud;
+  named.attributes.push_back({"normal_x", "float", {0.5, 0.25}});
+  std::ostringstream renamed;
+  WritePcd(renamed, named, "out.pcd");
+  const PointCloud renamed_back = Read(renamed.str());
+  EXPECT_EQ(renamed_back.normals.size(), 2u);
+  ASSERT_NE(renamed_back.FindAttribute("input_normal_x"), nullptr);
+  EXPECT_EQ(renamed_back.FindAttribute("input_normal_x")->values, (std::vector<double>{0.5, 0.25}));
   // Coordinates that did not come as floats are written as doubles.
   cloud.float_coordinates = false;
   cloud.points[0].x() = 0.1;
