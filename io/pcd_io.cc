@@ -23,6 +23,8 @@ namespace {
 }
 
 constexpr size_t kMaxHeaderLine = 65536;
+// Values per point (the fields' COUNTs summed): bounds what a header can make us allocate.
+constexpr uint64_t kMaxValuesPerPoint = 4096;
 constexpr int kMaxHeaderLines = 1000;
 // LZF turns 3 input bytes into at most 264 output bytes.
 constexpr uint64_t kMaxLzfExpansion = 88;
@@ -83,6 +85,7 @@ PcdHeader ReadHeader(const std::string& name, std::istream& in) {
     const std::vector<std::string> values(tokens.begin() + 1, tokens.end());
     if (key == "VERSION" || key == "VIEWPOINT") continue;
     if (key == "FIELDS" || key == "COLUMNS") {
+      if (!header.fields.empty()) Fail(name, header.lines, "a second FIELDS line");
       for (const std::string& field : values) header.fields.push_back({field});
     } else if (key == "SIZE") {
       sizes = values;
@@ -120,6 +123,7 @@ PcdHeader ReadHeader(const std::string& name, std::istream& in) {
                       std::to_string(n) + " fields)");
   }
   int offset = 0;
+  uint64_t values_per_point = 0;
   for (size_t f = 0; f < n; ++f) {
     PcdField& field = header.fields[f];
     field.size = sizes[f] == "1" || sizes[f] == "2" || sizes[f] == "4" || sizes[f] == "8"
@@ -132,11 +136,14 @@ PcdHeader ReadHeader(const std::string& name, std::istream& in) {
       Fail(name, 0, "field '" + field.name + "' has TYPE " + types[f] + " and SIZE " + sizes[f] +
                         " (expected I or U of 1, 2, 4 or 8 bytes, or F of 4 or 8)");
     }
-    field.count = counts.empty() ? 1
-                                 : static_cast<int>(ParseCount(name, 0, "COUNT", counts[f]));
-    if (field.count < 1 || field.count > 4096) {
-      Fail(name, 0, "field '" + field.name + "' has COUNT " + counts[f] + " (expected 1-4096)");
+    const uint64_t count = counts.empty() ? 1 : ParseCount(name, 0, "COUNT", counts[f]);
+    values_per_point += count;
+    if (count < 1 || values_per_point > kMaxValuesPerPoint) {
+      Fail(name, 0, "field '" + field.name + "' has COUNT " + std::to_string(count) +
+                        " (at least 1, and at most " + std::to_string(kMaxValuesPerPoint) +
+                        " values per point in all)");
     }
+    field.count = static_cast<int>(count);
     field.offset = offset;
     offset += field.size * field.count;
   }

@@ -265,6 +265,13 @@ TEST(PcdIo, BadFilesGiveOneLineErrors) {
                 .find("cannot hold 1200000"),
             std::string::npos);
   EXPECT_EQ(error_of("x\n").find("cloud.pcd:1: not a PCD header line"), 0u);
+  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 4294967297\nPOINTS 1\n"
+                     "DATA ascii\n1 2 3\n")
+                .find("has COUNT 4294967297"),
+            std::string::npos);
+  EXPECT_NE(error_of(fields + "FIELDS a b\nPOINTS 1\nDATA ascii\n1 2 3\n")
+                .find("a second FIELDS line"),
+            std::string::npos);
 }
 
 }  // namespace
