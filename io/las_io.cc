@@ -148,11 +148,6 @@ int HeaderSize(int version_minor) {
   return version_minor >= 4 ? 375 : version_minor == 3 ? 235 : 227;
 }
 
-bool IsLittleEndianHost() {
-  const uint16_t one = 1;
-  return *reinterpret_cast<const uint8_t*>(&one) == 1;
-}
-
 // Reads `count` bytes or fails naming what ended early.
 void ReadExactly(std::istream& in, char* bytes, size_t count, const std::string& name,
                  const char* what) {
@@ -170,7 +165,7 @@ int LasRecordLength(int format) {
 }
 
 PointCloud ReadLas(const std::string& name, std::istream& in) {
-  if (!IsLittleEndianHost()) Fail(name, "LAS files are read on little-endian hosts only");
+  if (!HostIsLittleEndian()) Fail(name, "LAS files are read on little-endian hosts only");
   char header[375] = {};
   ReadExactly(in, header, 227, name, "the LAS header");
   if (std::memcmp(header, "LASF", 4) != 0) Fail(name, "not a LAS file (no 'LASF' signature)");
@@ -272,7 +267,7 @@ PointCloud ReadLas(const std::string& name, std::istream& in) {
 }
 
 void WriteLas(std::ostream& out, const PointCloud& cloud, const std::string& name) {
-  if (!IsLittleEndianHost()) Fail(name, "LAS files are written on little-endian hosts only");
+  if (!HostIsLittleEndian()) Fail(name, "LAS files are written on little-endian hosts only");
   LasLayout layout;
   if (cloud.las) {
     layout = *cloud.las;

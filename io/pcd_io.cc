@@ -156,13 +156,6 @@ PcdHeader ReadHeader(const std::string& name, std::istream& in) {
   return header;
 }
 
-bool HostIsLittleEndian() {
-  const uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
-
 // The little-endian value of `field` at `bytes`.
 double DecodeValue(const PcdField& field, const unsigned char* bytes) {
   unsigned char value[8];
@@ -191,16 +184,32 @@ double DecodeValue(const PcdField& field, const unsigned char* bytes) {
   }
 }
 
-// The PLY type an attribute of `field` keeps (8-byte integers become doubles).
+// PCD's types and the PLY types attributes keep (8-byte integers become doubles): one table
+// for reading and writing.
+struct PcdType {
+  const char* ply;
+  char type;
+  int size;
+};
+constexpr PcdType kPcdTypes[] = {{"char", 'I', 1},  {"uchar", 'U', 1}, {"short", 'I', 2},
+                                 {"ushort", 'U', 2}, {"int", 'I', 4},   {"uint", 'U', 4},
+                                 {"float", 'F', 4},  {"double", 'F', 8}};
+
+// The PLY type an attribute of `field` keeps.
 std::string AttributeType(const PcdField& field) {
-  if (field.type == 'F') return field.size == 4 ? "float" : "double";
-  const bool is_signed = field.type == 'I';
-  switch (field.size) {
-    case 1: return is_signed ? "char" : "uchar";
-    case 2: return is_signed ? "short" : "ushort";
-    case 4: return is_signed ? "int" : "uint";
-    default: return "double";
+  for (const PcdType& t : kPcdTypes) {
+    if (t.type == field.type && t.size == field.size) return t.ply;
   }
+  return "double";
+}
+
+// The PCD type of an attribute of PLY type `ply` (double for any other).
+const PcdType& FieldType(const std::string& ply) {
+  const std::string canonical = CanonicalPlyType(ply);
+  for (const PcdType& t : kPcdTypes) {
+    if (canonical == t.ply) return t;
+  }
+  return kPcdTypes[7];
 }
 
 // Where each value of a point goes: a coordinate, a normal component, an attribute, the
@@ -409,41 +418,33 @@ void WritePcd(std::ostream& out, const PointCloud& cloud, const std::string& nam
   if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
   struct Column {
     std::string name;
-    char type;
-    int size;
+    const PcdType* type;
     const std::vector<double>* values = nullptr;  // an attribute's, else written below
   };
-  const int coordinate_size = cloud.float_coordinates ? 4 : 8;
-  std::vector<Column> columns = {{"x", 'F', coordinate_size}, {"y", 'F', coordinate_size},
-                                 {"z", 'F', coordinate_size}};
-  const bool with_normals = !cloud.normals.empty();
-  if (with_normals) {
+  const PcdType& coordinate = FieldType(cloud.float_coordinates ? "float" : "double");
+  const PcdType& single = FieldType("float");
+  std::vector<Column> columns = {{"x", &coordinate}, {"y", &coordinate}, {"z", &coordinate}};
+  if (!cloud.normals.empty()) {
     for (const char* component : {"normal_x", "normal_y", "normal_z"}) {
-      columns.push_back({component, 'F', 4});
+      columns.push_back({component, &single});
     }
   }
-  // The colour channels, packed as PCL packs them.
+  // The colour channels, packed as PCL packs them: rgb as a float's bits, rgba as a uint.
   auto uchar_attribute = [&cloud](const char* channel) {
     const PointAttribute* attribute = cloud.FindAttribute(channel);
     return attribute && attribute->type == "uchar" ? attribute : nullptr;
   };
-  std::vector<const PointAttribute*> channels = {
-      uchar_attribute("red"), uchar_attribute("green"), uchar_attribute("blue")};
+  std::vector<const PointAttribute*> channels = {uchar_attribute("red"), uchar_attribute("green"),
+                                                 uchar_attribute("blue")};
   if (std::find(channels.begin(), channels.end(), nullptr) != channels.end()) channels.clear();
   if (!channels.empty() && uchar_attribute("alpha")) channels.push_back(uchar_attribute("alpha"));
   const bool alpha = channels.size() == 4;
-  if (!channels.empty()) columns.push_back({alpha ? "rgba" : "rgb", alpha ? 'U' : 'F', 4});
+  if (!channels.empty()) {
+    columns.push_back({alpha ? "rgba" : "rgb", &FieldType(alpha ? "uint" : "float")});
+  }
   for (const PointAttribute& attribute : cloud.attributes) {
     if (std::find(channels.begin(), channels.end(), &attribute) != channels.end()) continue;
-    const std::string& type = attribute.type;
-    Column column{attribute.name, 'F', 8, &attribute.values};
-    if (type == "char" || type == "int8") column = {attribute.name, 'I', 1, &attribute.values};
-    if (type == "uchar" || type == "uint8") column = {attribute.name, 'U', 1, &attribute.values};
-    if (type == "short" || type == "int16") column = {attribute.name, 'I', 2, &attribute.values};
-    if (type == "ushort" || type == "uint16") column = {attribute.name, 'U', 2, &attribute.values};
-    if (type == "int" || type == "int32") column = {attribute.name, 'I', 4, &attribute.values};
-    if (type == "uint" || type == "uint32") column = {attribute.name, 'U', 4, &attribute.values};
-    if (type == "float" || type == "float32") column = {attribute.name, 'F', 4, &attribute.values};
+    Column column{attribute.name, &FieldType(attribute.type), &attribute.values};
     // Field names are unique: an attribute called normal_x beside the normals, say, is renamed.
     while (std::any_of(columns.begin(), columns.end(),
                        [&column](const Column& other) { return other.name == column.name; })) {
@@ -455,57 +456,33 @@ void WritePcd(std::ostream& out, const PointCloud& cloud, const std::string& nam
   out << "# .PCD v0.7 - Point Cloud Data file format (written by lpd)\nVERSION 0.7\nFIELDS";
   for (const Column& column : columns) out << ' ' << column.name;
   out << "\nSIZE";
-  for (const Column& column : columns) out << ' ' << column.size;
+  for (const Column& column : columns) out << ' ' << column.type->size;
   out << "\nTYPE";
-  for (const Column& column : columns) out << ' ' << column.type;
+  for (const Column& column : columns) out << ' ' << column.type->type;
   out << "\nCOUNT";
   for (size_t c = 0; c < columns.size(); ++c) out << " 1";
   out << "\nWIDTH " << n << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << n
       << "\nDATA binary\n";
   std::vector<char> record;
-  auto put = [&record](auto value) {
-    char bytes[sizeof(value)];
-    std::memcpy(bytes, &value, sizeof(value));
-    record.insert(record.end(), bytes, bytes + sizeof(value));
-  };
-  // An integer value rounded and clamped to its type's range (NaN gives 0).
-  auto clamped = [](double value, double lowest, double highest) {
-    if (std::isnan(value)) return 0.0;
-    return std::min(highest, std::max(lowest, std::round(value)));
-  };
   for (size_t i = 0; i < n; ++i) {
     record.clear();
     for (const Column& column : columns) {
-      double value = 0.0;
       if (column.values) {
-        value = (*column.values)[i];
+        AppendTyped(column.type->ply, (*column.values)[i], &record);
       } else if (column.name.size() == 1) {  // x, y, z
-        value = cloud.points[i][column.name[0] - 'x'];
+        AppendTyped(column.type->ply, cloud.points[i][column.name[0] - 'x'], &record);
       } else if (column.name.rfind("normal_", 0) == 0) {
-        value = cloud.normals[i][column.name.back() - 'x'];
-      } else {  // rgb or rgba
+        AppendTyped(column.type->ply, cloud.normals[i][column.name.back() - 'x'], &record);
+      } else {  // rgb or rgba: the channels' bits, 0xAARRGGBB
         uint32_t bits = 0;
         const int shifts[4] = {16, 8, 0, 24};
+        std::vector<char> channel;
         for (size_t c = 0; c < channels.size(); ++c) {
-          bits |= static_cast<uint32_t>(clamped(channels[c]->values[i], 0, 255)) << shifts[c];
+          channel.clear();
+          AppendTyped("uchar", channels[c]->values[i], &channel);
+          bits |= static_cast<uint32_t>(static_cast<uint8_t>(channel[0])) << shifts[c];
         }
-        put(bits);
-        continue;
-      }
-      if (column.type == 'F') {
-        column.size == 4 ? put(static_cast<float>(value)) : put(value);
-      } else if (column.type == 'I') {
-        switch (column.size) {
-          case 1: put(static_cast<int8_t>(clamped(value, INT8_MIN, INT8_MAX))); break;
-          case 2: put(static_cast<int16_t>(clamped(value, INT16_MIN, INT16_MAX))); break;
-          default: put(static_cast<int32_t>(clamped(value, INT32_MIN, INT32_MAX))); break;
-        }
-      } else {
-        switch (column.size) {
-          case 1: put(static_cast<uint8_t>(clamped(value, 0, UINT8_MAX))); break;
-          case 2: put(static_cast<uint16_t>(clamped(value, 0, UINT16_MAX))); break;
-          default: put(static_cast<uint32_t>(clamped(value, 0, UINT32_MAX))); break;
-        }
+        AppendTyped("uint", bits, &record);
       }
     }
     out.write(record.data(), static_cast<std::streamsize>(record.size()));

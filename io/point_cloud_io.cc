@@ -341,27 +341,9 @@ int PlyTypeSize(const std::string& type) {
   return 0;
 }
 
-// The PLY 1.0 name of `type` (int8 is char, float32 is float, ...).
-std::string CanonicalPlyType(const std::string& type) {
-  static const std::pair<const char*, const char*> kAliases[] = {
-      {"int8", "char"}, {"uint8", "uchar"}, {"int16", "short"}, {"uint16", "ushort"},
-      {"int32", "int"}, {"uint32", "uint"}, {"float32", "float"}, {"float64", "double"}};
-  for (const auto& [alias, name] : kAliases) {
-    if (type == alias) return name;
-  }
-  return type;
-}
-
 bool PlyTypeIsInteger(const std::string& type) {
   return PlyTypeSize(type) > 0 && type != "float" && type != "float32" && type != "double" &&
          type != "float64";
-}
-
-bool HostIsLittleEndian() {
-  const uint16_t probe = 1;
-  uint8_t first;
-  std::memcpy(&first, &probe, 1);
-  return first == 1;
 }
 
 // Reads one binary value of `type` and returns it as a double.
@@ -827,6 +809,8 @@ void AppendAs(double value, std::vector<char>* record) {
   record->insert(record->end(), bytes, bytes + sizeof(T));
 }
 
+}  // namespace
+
 void AppendTyped(const std::string& type, double value, std::vector<char>* record) {
   if (type == "char") return AppendAs<int8_t>(value, record);
   if (type == "uchar") return AppendAs<uint8_t>(value, record);
@@ -838,7 +822,22 @@ void AppendTyped(const std::string& type, double value, std::vector<char>* recor
   AppendAs<double>(value, record);
 }
 
-}  // namespace
+std::string CanonicalPlyType(const std::string& type) {
+  static const std::pair<const char*, const char*> kAliases[] = {
+      {"int8", "char"}, {"uint8", "uchar"}, {"int16", "short"}, {"uint16", "ushort"},
+      {"int32", "int"}, {"uint32", "uint"}, {"float32", "float"}, {"float64", "double"}};
+  for (const auto& [alias, name] : kAliases) {
+    if (type == alias) return name;
+  }
+  return type;
+}
+
+bool HostIsLittleEndian() {
+  const uint16_t probe = 1;
+  uint8_t first;
+  std::memcpy(&first, &probe, 1);
+  return first == 1;
+}
 
 void PointWriter::Write(const Point3& p, const Point3& normal, const double* values) {
   ++written_;

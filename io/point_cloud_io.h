@@ -110,6 +110,16 @@ class PointWriter {
   std::vector<char> record_;
 };
 
+// Appends `value` to `record` as the little-endian bytes of the PLY type `type` (canonical
+// name; rounded and clamped to its range for the integer types, NaN giving 0; double for
+// any other name): the one conversion of the PLY and PCD writers.
+void AppendTyped(const std::string& type, double value, std::vector<char>* record);
+
+// The PLY 1.0 name of `type` (int8 is char, float32 is float, ...).
+std::string CanonicalPlyType(const std::string& type);
+
+bool HostIsLittleEndian();
+
 // Lower-cased extension of `path` without the dot ("" if none).
 std::string FileExtension(const std::string& path);
 

@@ -32,6 +32,13 @@ std::string ReadError(const std::string& text) {
   return "";
 }
 
+// Whether reading `text` fails with a message holding `part` (the message when not).
+::testing::AssertionResult ErrorSays(const std::string& text, const std::string& part) {
+  const std::string error = ReadError(text);
+  if (error.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "error '" << error << "' does not say '" << part << "'";
+}
+
 template <typename T>
 void Append(T value, std::string* bytes) {  // little endian, as on the test machines
   char raw[sizeof(T)];
@@ -217,61 +224,44 @@ TEST(PcdIo, WrittenCloudsReadBackUnchanged) {
 
 TEST(PcdIo, BadFilesGiveOneLineErrors) {
   const std::string fields = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n";
-  auto error_of = [](const std::string& text) { return ReadError(text); };
-  EXPECT_NE(error_of("").find("the file is empty"), std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS 1\n").find("before its DATA line"), std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS 1\nDATA zip\n").find("DATA must be ascii"),
-            std::string::npos);
-  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4\nTYPE F F F\nPOINTS 1\nDATA ascii\n1 2 3\n")
-                .find("one value per field"),
-            std::string::npos);
-  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4 2\nTYPE F F F\nPOINTS 1\nDATA ascii\n1 2 3\n")
-                .find("field 'z' has TYPE F and SIZE 2"),
-            std::string::npos);
-  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4 4\nTYPE F F U\nPOINTS 1\nDATA ascii\n1 2 3\n")
-                .find("field 'z' must be of TYPE F"),
-            std::string::npos);
-  EXPECT_NE(error_of("FIELDS x y\nSIZE 4 4\nTYPE F F\nPOINTS 1\nDATA ascii\n1 2\n")
-                .find("no x, y and z fields"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "WIDTH 2\nHEIGHT 2\nPOINTS 3\nDATA ascii\n").find("WIDTH x HEIGHT"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS 2\nDATA ascii\n1 2 3\n").find("ends after 1 of its 2"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\n1 2\n").find("expected 3 values, got 2"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\n1 2 abc\n").find("'abc' is not a number"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\n1 2 inf\n").find("infinite coordinate"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS 1\nDATA ascii\nnan 2 3\n").find("every point has a NaN"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "POINTS -1\nDATA ascii\n").find("POINTS must be a whole number"),
-            std::string::npos);
+  EXPECT_TRUE(ErrorSays("", "the file is empty"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 1\n", "before its DATA line"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 1\nDATA zip\n", "DATA must be ascii"));
+  EXPECT_TRUE(ErrorSays("FIELDS x y z\nSIZE 4 4\nTYPE F F F\nPOINTS 1\nDATA ascii\n1 2 3\n",
+                        "one value per field"));
+  EXPECT_TRUE(ErrorSays("FIELDS x y z\nSIZE 4 4 2\nTYPE F F F\nPOINTS 1\nDATA ascii\n1 2 3\n",
+                        "field 'z' has TYPE F and SIZE 2"));
+  EXPECT_TRUE(ErrorSays("FIELDS x y z\nSIZE 4 4 4\nTYPE F F U\nPOINTS 1\nDATA ascii\n1 2 3\n",
+                        "field 'z' must be of TYPE F"));
+  EXPECT_TRUE(ErrorSays("FIELDS x y\nSIZE 4 4\nTYPE F F\nPOINTS 1\nDATA ascii\n1 2\n",
+                        "no x, y and z fields"));
+  EXPECT_TRUE(ErrorSays(fields + "WIDTH 2\nHEIGHT 2\nPOINTS 3\nDATA ascii\n", "WIDTH x HEIGHT"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 2\nDATA ascii\n1 2 3\n", "ends after 1 of its 2"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 1\nDATA ascii\n1 2\n", "expected 3 values, got 2"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 1\nDATA ascii\n1 2 abc\n", "'abc' is not a number"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 1\nDATA ascii\n1 2 inf\n", "infinite coordinate"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 1\nDATA ascii\nnan 2 3\n", "every point has a NaN"));
+  EXPECT_TRUE(ErrorSays(fields + "POINTS -1\nDATA ascii\n", "POINTS must be a whole number"));
   // A header that claims 4e9 points on a 12-byte body: nothing is allocated for them.
-  EXPECT_NE(error_of(fields + "POINTS 4000000000\nDATA binary\n123456789012")
-                .find("the file ends inside its binary points (12 of 48000000000 bytes)"),
-            std::string::npos);
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 4000000000\nDATA binary\n123456789012",
+                        "the file ends inside its binary points (12 of 48000000000 bytes)"));
   std::string sizes;
   Append(uint32_t{4}, &sizes);
   Append(uint32_t{12}, &sizes);
-  EXPECT_NE(error_of(fields + "POINTS 1\nDATA binary_compressed\n" + sizes + "\x1f\x01\x02\x03")
-                .find("corrupt"),
-            std::string::npos);
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 1\nDATA binary_compressed\n" + sizes + "\x1f\x01\x02\x03",
+                        "corrupt"));
   std::string huge;
   Append(uint32_t{4}, &huge);
   Append(uint32_t{1200000}, &huge);
-  EXPECT_NE(error_of(fields + "POINTS 100000\nDATA binary_compressed\n" + huge + "abcd")
-                .find("cannot hold 1200000"),
-            std::string::npos);
-  EXPECT_EQ(error_of("x\n").find("cloud.pcd:1: not a PCD header line"), 0u);
-  EXPECT_NE(error_of("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 4294967297\nPOINTS 1\n"
-                     "DATA ascii\n1 2 3\n")
-                .find("has COUNT 4294967297"),
-            std::string::npos);
-  EXPECT_NE(error_of(fields + "FIELDS a b\nPOINTS 1\nDATA ascii\n1 2 3\n")
-                .find("a second FIELDS line"),
-            std::string::npos);
+  EXPECT_TRUE(ErrorSays(fields + "POINTS 100000\nDATA binary_compressed\n" + huge + "abcd",
+                        "cannot hold 1200000"));
+  EXPECT_EQ(ReadError("x\n").find("cloud.pcd:1: not a PCD header line"), 0u);
+  EXPECT_TRUE(
+      ErrorSays("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 4294967297\nPOINTS 1\n"
+                "DATA ascii\n1 2 3\n",
+                "has COUNT 4294967297"));
+  EXPECT_TRUE(
+      ErrorSays(fields + "FIELDS a b\nPOINTS 1\nDATA ascii\n1 2 3\n", "a second FIELDS line"));
 }
 
 }  // namespace
