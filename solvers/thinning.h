@@ -21,6 +21,7 @@ namespace lpd::solvers {
 struct Thinning {
   std::vector<int> rows;  // the indices of the solved points, increasing; empty: all of them
   NeighborhoodSize size;  // k and its estimates, on the solved points
+  int probes = 0;         // how many clouds (the whole one, then subsamples) were probed for k
 };
 
 // Throws std::invalid_argument as ChooseNeighborhoodSize.

@@ -126,6 +126,11 @@ TEST(ChooseThinning, PastTheBudgetADenserSamplingGivesTheSameSubsample) {
               0.05 * sparse.rows.size());
   EXPECT_NEAR(dense.size.k, sparse.size.k, 2);
   EXPECT_NEAR(dense.size.noise_sigma, sparse.size.noise_sigma, 0.05 * sparse.size.noise_sigma);
+  // The whole cloud and at most two subsamples: the secant on k's growth with the density
+  // (thinning.cc) lands in the window at its second step (a step that assumes k ~ density, as
+  // the search once did, took four or five).
+  EXPECT_LE(sparse.probes, 3);
+  EXPECT_LE(dense.probes, 3);
 }
 
 }  // namespace
