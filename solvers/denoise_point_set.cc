@@ -246,11 +246,13 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     }
   }
   const NeighborhoodSize& estimates = state.neighborhood;
-  if (options.final_step.offset_feedback && estimates.spacing > 0.0 &&
-      estimates.noise_sigma <= kCalibratedReadRatio * estimates.spacing) {
+  const bool feed_back = options.final_step.offset_feedback && estimates.spacing > 0.0 &&
+                         estimates.noise_sigma <= kCalibratedReadRatio * estimates.spacing;
+  energy::PointList fed_back;
+  if (feed_back) {
     normalize_output();
-    const energy::PointList fed_back = FeedBackMeanOffsets(
-        problem.points, normalized, result.normals, movable, options.settings.num_threads);
+    fed_back = FeedBackMeanOffsets(problem.points, normalized, result.normals, movable,
+                                   options.settings.num_threads);
     for (size_t i = 0; i < normalized.size(); ++i) {
       result.projected[i] = problem.frame.ToInput(fed_back[i]);
     }
@@ -265,6 +267,19 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     ExtendToPoints(problem, state.variables, surfaces, result.indicators, result.summary.mu_l,
                    options.final_step, state.left_out_points, options.settings.num_threads,
                    &extended_points, &extended_normals, &extended);
+    if (feed_back) {
+      energy::PointList points(extended_points.size());
+      std::vector<uint8_t> extended_movable(points.size());
+      for (size_t q = 0; q < points.size(); ++q) {
+        points[q] = problem.frame.ToNormalized(extended_points[q]);
+        extended_movable[q] = !extended.is_outlier[q];
+      }
+      points = CarryFeedback(normalized, fed_back, result.normals, movable, points,
+                             extended_normals, extended_movable, options.settings.num_threads);
+      for (size_t q = 0; q < points.size(); ++q) {
+        extended_points[q] = problem.frame.ToInput(points[q]);
+      }
+    }
   }
   const std::vector<int>& left_out = state.left_out;
   result.projected = ToInputOrder(result.projected, order, extended_points, left_out);

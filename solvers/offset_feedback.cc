@@ -57,4 +57,35 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
   return result;
 }
 
+energy::PointList CarryFeedback(const energy::PointList& solved,
+                                const energy::PointList& fed_back,
+                                const energy::PointList& solved_normals,
+                                const std::vector<uint8_t>& solved_movable,
+                                const energy::PointList& outputs,
+                                const energy::PointList& normals,
+                                const std::vector<uint8_t>& movable, int num_threads) {
+  std::vector<int> rows;  // the solved points that took part
+  for (size_t j = 0; j < solved.size(); ++j) {
+    if (solved_movable[j] && solved_normals[j].squaredNorm() > 0.0) {
+      rows.push_back(static_cast<int>(j));
+    }
+  }
+  energy::PointList result = outputs;
+  if (rows.empty()) return result;
+  energy::PointList sources(rows.size());
+  for (size_t r = 0; r < rows.size(); ++r) sources[r] = solved[rows[r]];
+  const double min_cosine = std::cos(kFeedbackMaxAngleDegrees * M_PI / 180.0);
+  const energy::NearestNeighbors search(sources);
+  search.ForEach(static_cast<int>(outputs.size()), 1, num_threads,
+                 [&outputs](int i) { return outputs[i]; },
+                 [&](int i, const int* nearest, const double*, int found) {
+                   const energy::Point3& n = normals[i];
+                   if (found < 1 || !movable[i] || !(n.squaredNorm() > 0.0)) return;
+                   const int j = rows[nearest[0]];
+                   if (std::abs(n.dot(solved_normals[j])) < min_cosine) return;
+                   result[i] = outputs[i] + n.dot(fed_back[j] - solved[j]) * n;
+                 });
+  return result;
+}
+
 }  // namespace lpd::solvers

@@ -38,6 +38,21 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
                                       const energy::PointList& normals,
                                       const std::vector<uint8_t>& movable, int num_threads);
 
+// In a run on a subsample (subsample_extension.h), the feedback the solved points took
+// (`fed_back` - `solved`, along `solved_normals`) carried to the other points `outputs` (with
+// `normals`, same frame): each movable one moves along its normal by the shift of its nearest
+// movable solved point, as that shift projects on it, where their normals lie within
+// kFeedbackMaxAngleDegrees. The shifts vary over kFeedbackNeighbors solved points, so the
+// nearest one stands for its neighbourhood; the search is one neighbour per point where
+// feeding the whole output back would be kFeedbackNeighbors.
+energy::PointList CarryFeedback(const energy::PointList& solved,
+                                const energy::PointList& fed_back,
+                                const energy::PointList& solved_normals,
+                                const std::vector<uint8_t>& solved_movable,
+                                const energy::PointList& outputs,
+                                const energy::PointList& normals,
+                                const std::vector<uint8_t>& movable, int num_threads);
+
 }  // namespace lpd::solvers
 
 #endif  // LPD_SOLVERS_OFFSET_FEEDBACK_H_
