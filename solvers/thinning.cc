@@ -64,7 +64,7 @@ Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeO
     Thinning candidate = Subsample(points, fraction, options, num_threads);
     ++probes;
     size = ProblemSize(candidate);
-    if (fraction != last_fraction && candidate.size.k != last_k) {
+    if (fraction != last_fraction) {  // k clamped at min_k or max_k: b = 0
       growth = std::clamp(std::log(static_cast<double>(last_k) / candidate.size.k) /
                               std::log(last_fraction / fraction),
                           0.0, 1.0);

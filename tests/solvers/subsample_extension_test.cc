@@ -131,6 +131,13 @@ TEST(ChooseThinning, PastTheBudgetADenserSamplingGivesTheSameSubsample) {
   // the search once did, took four or five).
   EXPECT_LE(sparse.probes, 3);
   EXPECT_LE(dense.probes, 3);
+  // With k held at max_k on every subsample, n_s k is linear in n_s and the second step is
+  // exact: n_s = 0.95 budget / k.
+  options.max_k = 20;
+  const Thinning clamped = ChooseThinning(NoisyCadPart(80000, 2, 1000.0), options, 2);
+  EXPECT_EQ(clamped.size.k, 20);
+  EXPECT_LE(clamped.probes, 3);
+  EXPECT_NEAR(static_cast<double>(clamped.rows.size()), 0.95 * 5e5 / 20, 1.0);
 }
 
 }  // namespace
