@@ -727,6 +727,91 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
   if (count == 0) Fail(path, 0, kNoPoints);
 }
 
+void ForEachPointWithAttributes(
+    const std::string& path, const std::function<void(const std::vector<PointAttribute>&)>& start,
+    const std::function<void(const Point3&, const double*)>& visit) {
+  const std::string extension = FileExtension(path);
+  std::vector<PointAttribute> attributes;
+  std::vector<double> values;
+  if (extension == "ply") {
+    std::ifstream in = OpenInput(path);
+    SkipByteOrderMark(path, in);
+    long count = 0;
+    VisitPly(
+        path, in,
+        [&](const PlyElement& vertex, const VertexLayout& layout) {
+          for (size_t a : layout.attributes) {
+            attributes.push_back(
+                {vertex.properties[a].name, CanonicalPlyType(vertex.properties[a].type), {}});
+          }
+          values.resize(attributes.size());
+          start(attributes);
+        },
+        [&](const VertexLayout& layout, const std::vector<double>& vertex) {
+          for (size_t a = 0; a < attributes.size(); ++a) {
+            const double value = vertex[layout.attributes[a]];
+            // As ReadPly: an ascii float holds what a binary one would.
+            values[a] = attributes[a].type == "float" ? static_cast<float>(value) : value;
+          }
+          visit(Point3(vertex[layout.xyz[0]], vertex[layout.xyz[1]], vertex[layout.xyz[2]]),
+                values.data());
+          ++count;
+        });
+    if (count == 0) Fail(path, 0, kNoPoints);
+    return;
+  }
+  if (extension != "xyz" && extension != "txt" && extension != "pts") {
+    const PointCloud cloud = ReadPointCloud(path);
+    for (const PointAttribute& attribute : cloud.attributes) {
+      attributes.push_back({attribute.name, attribute.type, {}});
+    }
+    start(attributes);
+    values.resize(attributes.size());
+    for (size_t i = 0; i < cloud.points.size(); ++i) {
+      for (size_t a = 0; a < attributes.size(); ++a) values[a] = cloud.attributes[a].values[i];
+      visit(cloud.points[i], values.data());
+    }
+    return;
+  }
+  // XYZ: ReadXyz's rules (normals in columns 4-6 when every line has unit ones, the other
+  // columns when every line has as many), found in a first pass.
+  bool normals_on_every_line = true;
+  bool same_columns_on_every_line = true;
+  long count = 0;
+  size_t columns = 0;
+  std::vector<double> line_columns;
+  {
+    std::ifstream in = OpenInput(path);
+    SkipByteOrderMark(path, in);
+    VisitXyz(path, in, [&](const Point3&, const char* rest) {
+      ++count;
+      Point3 n;
+      normals_on_every_line = normals_on_every_line && ParseThreeNumbers(rest, &n) &&
+                              n.allFinite() && std::abs(n.norm() - 1.0) < 0.01;
+      if (!same_columns_on_every_line) return;
+      same_columns_on_every_line = ParseColumns(rest, &line_columns) &&
+                                   (count == 1 || line_columns.size() == columns);
+      columns = line_columns.size();
+    });
+  }
+  if (count == 0) Fail(path, 0, kNoPoints);
+  const size_t first = normals_on_every_line ? 3 : 0;
+  if (same_columns_on_every_line) {
+    for (size_t c = first; c < columns; ++c) {
+      attributes.push_back({"column_" + std::to_string(c + 4), "double", {}});
+    }
+  }
+  start(attributes);
+  std::ifstream in = OpenInput(path);
+  SkipByteOrderMark(path, in);
+  VisitXyz(path, in, [&](const Point3& p, const char* rest) {
+    if (!attributes.empty() && (!ParseColumns(rest, &line_columns) || line_columns.size() != columns)) {
+      Fail(path, 0, "the file changed while it was read");
+    }
+    visit(p, attributes.empty() ? nullptr : line_columns.data() + first);
+  });
+}
+
 std::string OutputFormat(const std::string& path, const std::string& format) {
   const std::string chosen = format.empty() ? FileExtension(path) : format;
   if (chosen == "ply" || chosen == "xyz" || chosen == "txt" || chosen == "las" ||

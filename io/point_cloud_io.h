@@ -76,6 +76,14 @@ energy::PointList ReadPoints(const std::string& path);
 // with the checks and errors of ReadPointCloud.
 void ForEachPoint(const std::string& path, const std::function<void(const energy::Point3&)>& visit);
 
+// The same with the attributes ReadPointCloud reads (no normals): start(attributes) first,
+// with their names and types and no values, then visit(p, values) for every point, values
+// holding its attributes in that order. An XYZ file is read twice (the first pass finds
+// whether every line has the same columns); other formats than XYZ and PLY are read whole.
+void ForEachPointWithAttributes(
+    const std::string& path, const std::function<void(const std::vector<PointAttribute>&)>& start,
+    const std::function<void(const energy::Point3&, const double*)>& visit);
+
 // Writes `cloud` to `path` (".ply", ".xyz"/".txt", ".las" or ".pcd", or `format`; "-" is
 // standard output and needs `format`); throws std::runtime_error on failure.
 void WritePointCloud(const std::string& path, const PointCloud& cloud, bool overwrite,

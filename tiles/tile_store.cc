@@ -248,7 +248,8 @@ void TileStore::WriteTile(int tile, const std::vector<uint32_t>& own,
 }
 
 void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSummary>& tiles,
-                      const std::string& output, bool overwrite) const {
+                      const std::string& input, const std::string& output,
+                      bool overwrite) const {
   size_t kept = 0;
   for (const TileSummary& tile : tiles) kept += tile.kept;
   // The tiles' records gathered by input index into one memory-mapped file, one tile file
@@ -286,15 +287,34 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
       io::ThrowIfInterrupted();
     }
   }
-  io::PointWriter writer(output, overwrite, kept, /*with_normals=*/true,
-                         {{"outlier", "float"},
-                          {"outlier_score", "float"},
-                          {"feature", "float"},
-                          {"feature_score", "float"},
-                          {"seam", "float"},
-                          {"source_index", "uint"},
-                          {"tile", "uint"}});
-  Scan([&](uint32_t index, const energy::Point3& p) {
+  const std::vector<std::pair<std::string, std::string>> lpd_fields = {
+      {"outlier", "float"}, {"outlier_score", "float"}, {"feature", "float"},
+      {"feature_score", "float"}, {"seam", "float"}, {"source_index", "uint"}, {"tile", "uint"}};
+  std::unique_ptr<io::PointWriter> writer;
+  size_t num_attributes = 0;
+  auto open_writer = [&](const std::vector<io::PointAttribute>& attributes) {
+    std::vector<std::pair<std::string, std::string>> fields;
+    auto taken = [&](const std::string& name) {
+      for (const auto& field : fields) {
+        if (field.first == name) return true;
+      }
+      for (const auto& field : lpd_fields) {
+        if (field.first == name) return true;
+      }
+      return false;
+    };
+    for (const io::PointAttribute& attribute : attributes) {
+      std::string name = attribute.name;
+      while (taken(name)) name = "input_" + name;
+      fields.emplace_back(name, attribute.type);
+    }
+    num_attributes = fields.size();
+    fields.insert(fields.end(), lpd_fields.begin(), lpd_fields.end());
+    writer = std::make_unique<io::PointWriter>(output, overwrite, kept, /*with_normals=*/true,
+                                               fields);
+  };
+  std::vector<double> values;
+  auto write = [&](uint32_t index, const energy::Point3& p, const double* attributes) {
     if (index >= count || !filled[index]) {
       throw std::runtime_error("no tile holds the result of point " + std::to_string(index));
     }
@@ -308,13 +328,35 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
         break;
       }
     }
-    const double values[] = {static_cast<double>(r.is_outlier), r.outlier_score,
-                             static_cast<double>(r.is_feature), r.feature_score,
-                             seam ? 1.0 : 0.0, static_cast<double>(index), static_cast<double>(t)};
-    writer.Write(energy::Point3(r.position[0], r.position[1], r.position[2]),
-                 energy::Point3(r.normal[0], r.normal[1], r.normal[2]), values);
-  });
-  writer.Commit();
+    values.assign(attributes, attributes + num_attributes);
+    values.insert(values.end(), {static_cast<double>(r.is_outlier), r.outlier_score,
+                                 static_cast<double>(r.is_feature), r.feature_score,
+                                 seam ? 1.0 : 0.0, static_cast<double>(index),
+                                 static_cast<double>(t)});
+    writer->Write(energy::Point3(r.position[0], r.position[1], r.position[2]),
+                  energy::Point3(r.normal[0], r.normal[1], r.normal[2]), values.data());
+  };
+  if (input.empty()) {
+    open_writer({});
+    Scan([&](uint32_t index, const energy::Point3& p) { write(index, p, nullptr); });
+  } else {
+    // The input again, beside points.bin: the spooled points, in the same order.
+    std::ifstream spooled(directory_ + "/points.bin", std::ios::binary);
+    uint32_t index = 0;
+    io::ForEachPointWithAttributes(input, open_writer,
+                                   [&](const energy::Point3& p, const double* attributes) {
+                                     double stored[3];
+                                     if (!spooled.read(reinterpret_cast<char*>(stored),
+                                                       sizeof(stored)) ||
+                                         p != energy::Point3(stored[0], stored[1], stored[2])) {
+                                       throw std::runtime_error(
+                                           input + " changed while it was denoised");
+                                     }
+                                     write(index++, p, attributes);
+                                   });
+    if (index != count) throw std::runtime_error(input + " changed while it was denoised");
+  }
+  writer->Commit();
 }
 
 }  // namespace lpd::tiles

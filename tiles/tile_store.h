@@ -61,10 +61,14 @@ class TileStore {
                  const solvers::TileOutcome& outcome) const;
 
   // Rank 0, once every tile is written: the kept points in input order to `output` (.ply with
-  // normals, outlier, outlier_score, feature, feature_score, seam, source_index and tile, or
-  // .xyz). A point is at a seam when it lies in the halo of a tile other than its own.
+  // normals, the attributes of the file `input` when one was spooled, then outlier,
+  // outlier_score, feature, feature_score, seam, source_index and tile; or .xyz). The input
+  // is read again point by point for its attributes (colours, intensities, ...; an attribute
+  // named as one of those fields is written input_NAME); a point that differs from the
+  // spooled one ends the merge with an error. A point is at a seam when it lies in the halo
+  // of a tile other than its own.
   void Merge(const solvers::TileTree& tree, const std::vector<TileSummary>& tiles,
-             const std::string& output, bool overwrite) const;
+             const std::string& input, const std::string& output, bool overwrite) const;
 
  private:
   std::string directory_;

@@ -242,7 +242,7 @@ TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& point
     world.Abort();
   }
   io::ThrowIfInterrupted();
-  if (!output.empty()) store->Merge(tree, progress.summaries(), output, overwrite);
+  if (!output.empty()) store->Merge(tree, progress.summaries(), input, output, overwrite);
   run.seconds = SecondsSince(start);
   return run;
 }

@@ -38,6 +38,31 @@ cases=$((cases + 1))
 grep -q "tiles 4 on 1 process" "$dir/stdout" || fail "one process: $(cat "$dir/stdout")"
 [ "$(wc -l <"$dir/one.xyz")" -gt 5900 ] || fail "one process: $(wc -l <"$dir/one.xyz") points out"
 
+# The input's attributes reach a tiled output as an untiled one: colours and an attribute
+# named like one of lpd's fields (written input_tile), each point's from its input row.
+cases=$((cases + 1))
+awk 'BEGIN { print "ply\nformat ascii 1.0\nelement vertex 6000\nproperty double x\nproperty double y\nproperty double z\nproperty uchar red\nproperty uchar green\nproperty int tile\nend_header" }
+     { print $1, $2, $3, NR % 256, (7 * NR) % 256, -NR }' "$dir/cloud.xyz" >"$dir/colours.ply"
+"$lpd" denoise "$dir/colours.ply" -o "$dir/colours_out.ply" --tile_points=1500 --quiet \
+  >/dev/null 2>"$dir/stderr" || fail "attributes: $(tail -1 "$dir/stderr")"
+python3 - "$dir/colours_out.ply" <<'PY' || fail "attributes: the tiled output's attributes differ from the input's"
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+header, body = data.split(b"end_header\n", 1)
+lines = header.decode().splitlines()
+count = int(next(l for l in lines if l.startswith("element vertex")).split()[2])
+props = [l.split()[1:] for l in lines if l.startswith("property")]
+codes = {"double": "d", "float": "f", "uchar": "B", "int": "i", "uint": "I"}
+names = [n for _, n in props]
+assert names[6:9] == ["red", "green", "input_tile"] and "tile" in names[9:], names
+record = struct.Struct("<" + "".join(codes[t] for t, _ in props))
+for r in range(count):
+    row = dict(zip(names, record.unpack_from(body, r * record.size)))
+    line = row["source_index"] + 1  # the input's 1-based row
+    assert (row["red"], row["green"], row["input_tile"]) == (line % 256, (7 * line) % 256, -line), row
+assert count > 5900, count
+PY
+
 refused tiles_below_a_neighbourhood "fewer than the 41" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=40
 refused tiles_with_resume "cannot be combined" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --save_state=out.lpds
 refused tiles_with_input_normals "input_normals" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --initialization=input_normals

@@ -218,6 +218,57 @@ TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
   }
 }
 
+// What io::ForEachPointWithAttributes gives, as a cloud (points and attributes).
+io::PointCloud StreamCloud(const std::string& path) {
+  io::PointCloud cloud;
+  io::ForEachPointWithAttributes(
+      path, [&](const std::vector<io::PointAttribute>& attributes) { cloud.attributes = attributes; },
+      [&](const energy::Point3& p, const double* values) {
+        cloud.points.push_back(p);
+        for (size_t a = 0; a < cloud.attributes.size(); ++a) {
+          cloud.attributes[a].values.push_back(values[a]);
+        }
+      });
+  return cloud;
+}
+
+TEST_F(PointCloudIoTest, StreamingWithAttributesGivesWhatTheWholeReaderReads) {
+  io::PointCloud cloud;
+  cloud.points = {{1.5, -2.25, 1e-9}, {3, 4, 5}, {-7, 0.125, 2}};
+  cloud.normals = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}};
+  cloud.attributes = {{"red", "uchar", {255, 0, 7}}, {"score", "float", {0.5, 0.25, 1.0}},
+                      {"tile", "int", {-3, 4, 2}}};
+  const std::string binary = (directory_ / "colours.ply").string();
+  io::WritePointCloud(binary, cloud, false);
+  const std::string las = (directory_ / "colours.las").string();
+  io::WritePointCloud(las, cloud, false);
+  const std::string paths[] = {
+      binary, las,
+      Write("ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                         "property float y\nproperty float z\nproperty float w\n"
+                         "property uchar c\nend_header\n1 2 3 0.1 9\n4 5 6 0.7 200\n"),
+      Write("columns.xyz", "# comment\n1 2 3 9 8\n\n4 5 6 7 6.5\n"),
+      Write("normals.xyz", "1 2 3 0 0 1 4\n4 5 6 1 0 0 5\n"),
+      Write("normals_only.xyz", "1 2 3 0 0 1\n4 5 6 1 0 0\n"),
+      Write("ragged.xyz", "1 2 3 9\n4 5 6\n7 8 9 1 2\n")};
+  for (const std::string& path : paths) {
+    const io::PointCloud whole = io::ReadPointCloud(path);
+    const io::PointCloud streamed = StreamCloud(path);
+    EXPECT_EQ(streamed.points, whole.points) << path;
+    ASSERT_EQ(streamed.attributes.size(), whole.attributes.size()) << path;
+    for (size_t a = 0; a < whole.attributes.size(); ++a) {
+      EXPECT_EQ(streamed.attributes[a].name, whole.attributes[a].name) << path;
+      EXPECT_EQ(streamed.attributes[a].type, whole.attributes[a].type) << path;
+      EXPECT_EQ(streamed.attributes[a].values, whole.attributes[a].values) << path;
+    }
+  }
+  EXPECT_EQ(StreamCloud(paths[2]).attributes.size(), 2u);  // w (0.1 read as a float), c
+  EXPECT_EQ(StreamCloud(paths[3]).attributes.size(), 2u);  // column_4, column_5
+  EXPECT_EQ(StreamCloud(paths[4]).attributes.size(), 1u);  // column_7 after the normals
+  EXPECT_TRUE(StreamCloud(paths[5]).attributes.empty());   // normals only
+  EXPECT_TRUE(StreamCloud(paths[6]).attributes.empty());   // ragged: no columns
+}
+
 TEST_F(PointCloudIoTest, APointWriterShortOfItsCountLeavesNoFile) {
   const std::string path = (directory_ / "short.ply").string();
   {
