@@ -727,25 +727,105 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
   if (count == 0) Fail(path, 0, kNoPoints);
 }
 
-void ForEachPointWithAttributes(
-    const std::string& path, const std::function<void(const std::vector<PointAttribute>&)>& start,
-    const std::function<void(const Point3&, const double*)>& visit) {
+namespace {
+
+bool IsXyz(const std::string& extension) {
+  return extension == "xyz" || extension == "txt" || extension == "pts";
+}
+
+// ReadXyz's rules for its columns: whether every line has unit normals in columns 4-6, and
+// the number of columns when every line has as many (else -1).
+struct XyzColumns {
+  bool normals = true;
+  long columns = -1;
+};
+
+XyzColumns ReadXyzColumns(const std::string& path) {
+  std::ifstream in = OpenInput(path);
+  SkipByteOrderMark(path, in);
+  XyzColumns found;
+  bool same = true;
+  long count = 0;
+  std::vector<double> line_columns;
+  VisitXyz(path, in, [&](const Point3&, const char* rest) {
+    ++count;
+    Point3 n;
+    found.normals = found.normals && ParseThreeNumbers(rest, &n) && n.allFinite() &&
+                    std::abs(n.norm() - 1.0) < 0.01;
+    if (!same) return;
+    same = ParseColumns(rest, &line_columns) &&
+           (count == 1 || static_cast<long>(line_columns.size()) == found.columns);
+    found.columns = static_cast<long>(line_columns.size());
+  });
+  if (count == 0) Fail(path, 0, kNoPoints);
+  if (!same) found.columns = -1;
+  return found;
+}
+
+// Whether the first point line of an XYZ file has a column past x y z.
+bool FirstXyzLineHasColumns(const std::string& path) {
+  std::ifstream in = OpenInput(path);
+  SkipByteOrderMark(path, in);
+  std::string line;
+  long number = 0;
+  while (ReadLine(path, in, &line, number + 1)) {
+    ++number;
+    if (IsBlankOrComment(line)) continue;
+    Point3 p;
+    const char* rest = nullptr;
+    std::vector<double> columns;
+    return !ParseThreeNumbers(line.c_str(), &p, &rest) || !ParseColumns(rest, &columns) ||
+           !columns.empty();
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<PointAttribute> StreamedAttributes(const std::string& path) {
   const std::string extension = FileExtension(path);
   std::vector<PointAttribute> attributes;
-  std::vector<double> values;
   if (extension == "ply") {
     std::ifstream in = OpenInput(path);
     SkipByteOrderMark(path, in);
-    long count = 0;
+    const PlyHeader header = ReadPlyHeader(path, in);
+    for (const PlyElement& element : header.elements) {
+      if (element.name != "vertex") continue;
+      for (size_t a : LayoutOf(path, element).attributes) {
+        attributes.push_back(
+            {element.properties[a].name, CanonicalPlyType(element.properties[a].type), {}});
+      }
+    }
+  } else if (IsXyz(extension)) {
+    if (!FirstXyzLineHasColumns(path)) return attributes;
+    const XyzColumns found = ReadXyzColumns(path);
+    for (long c = found.normals ? 3 : 0; c < found.columns; ++c) {
+      attributes.push_back({"column_" + std::to_string(c + 4), "double", {}});
+    }
+  } else {
+    for (const PointAttribute& attribute : ReadPointCloud(path).attributes) {
+      attributes.push_back({attribute.name, attribute.type, {}});
+    }
+  }
+  return attributes;
+}
+
+void ForEachPointWithAttributes(
+    const std::string& path, const std::vector<PointAttribute>& attributes,
+    const std::function<void(const Point3&, const double*)>& visit) {
+  const std::string extension = FileExtension(path);
+  std::vector<double> values(attributes.size());
+  auto check_count = [&](size_t found) {
+    if (found != attributes.size()) Fail(path, 0, "the file changed while it was read");
+  };
+  long count = 0;
+  if (extension == "ply") {
+    std::ifstream in = OpenInput(path);
+    SkipByteOrderMark(path, in);
     VisitPly(
         path, in,
-        [&](const PlyElement& vertex, const VertexLayout& layout) {
-          for (size_t a : layout.attributes) {
-            attributes.push_back(
-                {vertex.properties[a].name, CanonicalPlyType(vertex.properties[a].type), {}});
-          }
-          values.resize(attributes.size());
-          start(attributes);
+        [&](const PlyElement&, const VertexLayout& layout) {
+          check_count(layout.attributes.size());
         },
         [&](const VertexLayout& layout, const std::vector<double>& vertex) {
           for (size_t a = 0; a < attributes.size(); ++a) {
@@ -757,59 +837,35 @@ void ForEachPointWithAttributes(
                 values.data());
           ++count;
         });
-    if (count == 0) Fail(path, 0, kNoPoints);
-    return;
-  }
-  if (extension != "xyz" && extension != "txt" && extension != "pts") {
+  } else if (IsXyz(extension)) {
+    // The attributes are the last columns (after the normals, when there are some).
+    std::vector<double> line_columns;
+    size_t columns = 0;  // the first line's: every line has as many
+    std::ifstream in = OpenInput(path);
+    SkipByteOrderMark(path, in);
+    VisitXyz(path, in, [&](const Point3& p, const char* rest) {
+      if (!attributes.empty()) {
+        if (count == 0 && ParseColumns(rest, &line_columns)) columns = line_columns.size();
+        if (!ParseColumns(rest, &line_columns) || line_columns.size() != columns ||
+            columns < attributes.size()) {
+          check_count(0);
+        }
+      }
+      visit(p, attributes.empty()
+                   ? nullptr
+                   : line_columns.data() + (line_columns.size() - attributes.size()));
+      ++count;
+    });
+  } else {
     const PointCloud cloud = ReadPointCloud(path);
-    for (const PointAttribute& attribute : cloud.attributes) {
-      attributes.push_back({attribute.name, attribute.type, {}});
-    }
-    start(attributes);
-    values.resize(attributes.size());
+    check_count(cloud.attributes.size());
     for (size_t i = 0; i < cloud.points.size(); ++i) {
       for (size_t a = 0; a < attributes.size(); ++a) values[a] = cloud.attributes[a].values[i];
       visit(cloud.points[i], values.data());
-    }
-    return;
-  }
-  // XYZ: ReadXyz's rules (normals in columns 4-6 when every line has unit ones, the other
-  // columns when every line has as many), found in a first pass.
-  bool normals_on_every_line = true;
-  bool same_columns_on_every_line = true;
-  long count = 0;
-  size_t columns = 0;
-  std::vector<double> line_columns;
-  {
-    std::ifstream in = OpenInput(path);
-    SkipByteOrderMark(path, in);
-    VisitXyz(path, in, [&](const Point3&, const char* rest) {
       ++count;
-      Point3 n;
-      normals_on_every_line = normals_on_every_line && ParseThreeNumbers(rest, &n) &&
-                              n.allFinite() && std::abs(n.norm() - 1.0) < 0.01;
-      if (!same_columns_on_every_line) return;
-      same_columns_on_every_line = ParseColumns(rest, &line_columns) &&
-                                   (count == 1 || line_columns.size() == columns);
-      columns = line_columns.size();
-    });
+    }
   }
   if (count == 0) Fail(path, 0, kNoPoints);
-  const size_t first = normals_on_every_line ? 3 : 0;
-  if (same_columns_on_every_line) {
-    for (size_t c = first; c < columns; ++c) {
-      attributes.push_back({"column_" + std::to_string(c + 4), "double", {}});
-    }
-  }
-  start(attributes);
-  std::ifstream in = OpenInput(path);
-  SkipByteOrderMark(path, in);
-  VisitXyz(path, in, [&](const Point3& p, const char* rest) {
-    if (!attributes.empty() && (!ParseColumns(rest, &line_columns) || line_columns.size() != columns)) {
-      Fail(path, 0, "the file changed while it was read");
-    }
-    visit(p, attributes.empty() ? nullptr : line_columns.data() + first);
-  });
 }
 
 std::string OutputFormat(const std::string& path, const std::string& format) {

@@ -76,12 +76,15 @@ energy::PointList ReadPoints(const std::string& path);
 // with the checks and errors of ReadPointCloud.
 void ForEachPoint(const std::string& path, const std::function<void(const energy::Point3&)>& visit);
 
-// The same with the attributes ReadPointCloud reads (no normals): start(attributes) first,
-// with their names and types and no values, then visit(p, values) for every point, values
-// holding its attributes in that order. An XYZ file is read twice (the first pass finds
-// whether every line has the same columns); other formats than XYZ and PLY are read whole.
+// The attributes ReadPointCloud reads from `path` (names and types, no values): a PLY's
+// header, an XYZ file read once (none without a column past x y z on its first point line),
+// other formats read whole.
+std::vector<PointAttribute> StreamedAttributes(const std::string& path);
+
+// ForEachPoint with those `attributes` (StreamedAttributes(path)): visit(p, values), values
+// holding the point's attributes in their order.
 void ForEachPointWithAttributes(
-    const std::string& path, const std::function<void(const std::vector<PointAttribute>&)>& start,
+    const std::string& path, const std::vector<PointAttribute>& attributes,
     const std::function<void(const energy::Point3&, const double*)>& visit);
 
 // Writes `cloud` to `path` (".ply", ".xyz"/".txt", ".las" or ".pcd", or `format`; "-" is

@@ -336,15 +336,17 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
     writer->Write(energy::Point3(r.position[0], r.position[1], r.position[2]),
                   energy::Point3(r.normal[0], r.normal[1], r.normal[2]), values.data());
   };
-  if (input.empty()) {
-    open_writer({});
+  const std::vector<io::PointAttribute> attributes =
+      input.empty() ? std::vector<io::PointAttribute>() : io::StreamedAttributes(input);
+  open_writer(attributes);
+  if (attributes.empty()) {
     Scan([&](uint32_t index, const energy::Point3& p) { write(index, p, nullptr); });
   } else {
     // The input again, beside points.bin: the spooled points, in the same order.
     std::ifstream spooled(directory_ + "/points.bin", std::ios::binary);
     uint32_t index = 0;
-    io::ForEachPointWithAttributes(input, open_writer,
-                                   [&](const energy::Point3& p, const double* attributes) {
+    io::ForEachPointWithAttributes(input, attributes,
+                                   [&](const energy::Point3& p, const double* row) {
                                      double stored[3];
                                      if (!spooled.read(reinterpret_cast<char*>(stored),
                                                        sizeof(stored)) ||
@@ -352,7 +354,7 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
                                        throw std::runtime_error(
                                            input + " changed while it was denoised");
                                      }
-                                     write(index++, p, attributes);
+                                     write(index++, p, row);
                                    });
     if (index != count) throw std::runtime_error(input + " changed while it was denoised");
   }

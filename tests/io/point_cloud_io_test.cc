@@ -221,9 +221,9 @@ TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
 // What io::ForEachPointWithAttributes gives, as a cloud (points and attributes).
 io::PointCloud StreamCloud(const std::string& path) {
   io::PointCloud cloud;
+  cloud.attributes = io::StreamedAttributes(path);
   io::ForEachPointWithAttributes(
-      path, [&](const std::vector<io::PointAttribute>& attributes) { cloud.attributes = attributes; },
-      [&](const energy::Point3& p, const double* values) {
+      path, cloud.attributes, [&](const energy::Point3& p, const double* values) {
         cloud.points.push_back(p);
         for (size_t a = 0; a < cloud.attributes.size(); ++a) {
           cloud.attributes[a].values.push_back(values[a]);
