@@ -164,7 +164,7 @@ int LasRecordLength(int format) {
   return format >= 0 && format <= 8 ? kLengths[format] : 0;
 }
 
-PointCloud ReadLas(const std::string& name, std::istream& in) {
+LasHeader ReadLasHeader(const std::string& name, std::istream& in) {
   if (!HostIsLittleEndian()) Fail(name, "LAS files are read on little-endian hosts only");
   char header[375] = {};
   ReadExactly(in, header, 227, name, "the LAS header");
@@ -233,36 +233,57 @@ PointCloud ReadLas(const std::string& name, std::istream& in) {
   }
   if (count == 0) Fail(name, "the file contains no points");
 
-  PointCloud cloud;
-  const std::vector<LasField>& fields = FieldsOf(layout.point_format);
-  const int extra_bytes = layout.record_length - core;
-  for (const LasField& field : fields) cloud.attributes.push_back({field.name, field.type, {}});
-  for (int b = 0; b < extra_bytes; ++b) {
-    cloud.attributes.push_back({"extra_byte_" + std::to_string(b), "uchar", {}});
+  LasHeader result;
+  result.count = count;
+  for (const LasField& field : FieldsOf(layout.point_format)) {
+    result.attributes.push_back({field.name, field.type, {}});
   }
+  for (int b = 0; b < layout.record_length - core; ++b) {
+    result.attributes.push_back({"extra_byte_" + std::to_string(b), "uchar", {}});
+  }
+  result.layout = std::move(layout);
+  return result;
+}
+
+void VisitLasRecords(const std::string& name, std::istream& in, const LasHeader& header,
+                     const std::function<void(const energy::Point3&, const double*)>& visit) {
+  const LasLayout& layout = header.layout;
+  const std::vector<LasField>& fields = FieldsOf(layout.point_format);
+  const int core = LasRecordLength(layout.point_format);
+  const int extra_bytes = layout.record_length - core;
   std::vector<char> record(layout.record_length);
-  // Grown as records arrive, so that a header claiming more points than the file holds
-  // costs nothing before the data runs out.
-  for (uint64_t i = 0; i < count; ++i) {
+  std::vector<double> values(fields.size() + extra_bytes);
+  for (uint64_t i = 0; i < header.count; ++i) {
     if (!in.read(record.data(), layout.record_length)) {
       Fail(name, "the file ends inside point record " + std::to_string(i) + " of " +
-                     std::to_string(count));
+                     std::to_string(header.count));
     }
     energy::Point3 p;
     for (int c = 0; c < 3; ++c) {
       p[c] = Get<int32_t>(record.data() + 4 * c) * layout.scale[c] + layout.offset[c];
     }
     if (!p.allFinite()) Fail(name, "point " + std::to_string(i) + " has a non-finite coordinate");
-    cloud.points.push_back(p);
-    for (size_t f = 0; f < fields.size(); ++f) {
-      cloud.attributes[f].values.push_back(ReadValue(record.data(), fields[f]));
-    }
+    for (size_t f = 0; f < fields.size(); ++f) values[f] = ReadValue(record.data(), fields[f]);
     for (int b = 0; b < extra_bytes; ++b) {
-      cloud.attributes[fields.size() + b].values.push_back(
-          static_cast<uint8_t>(record[core + b]));
+      values[fields.size() + b] = static_cast<uint8_t>(record[core + b]);
     }
+    visit(p, values.data());
   }
-  cloud.las = std::make_shared<LasLayout>(std::move(layout));
+}
+
+PointCloud ReadLas(const std::string& name, std::istream& in) {
+  LasHeader header = ReadLasHeader(name, in);
+  PointCloud cloud;
+  cloud.attributes = header.attributes;
+  // Grown as records arrive, so that a header claiming more points than the file holds
+  // costs nothing before the data runs out.
+  VisitLasRecords(name, in, header, [&](const energy::Point3& p, const double* values) {
+    cloud.points.push_back(p);
+    for (size_t a = 0; a < cloud.attributes.size(); ++a) {
+      cloud.attributes[a].values.push_back(values[a]);
+    }
+  });
+  cloud.las = std::make_shared<LasLayout>(std::move(header.layout));
   return cloud;
 }
 

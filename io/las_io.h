@@ -14,13 +14,15 @@
 #define LPD_IO_LAS_IO_H_
 
 #include <cstdint>
+#include <functional>
 #include <istream>
 #include <string>
 #include <vector>
 
-namespace lpd::io {
+#include "energy/point3.h"
+#include "io/point_cloud_io.h"
 
-struct PointCloud;
+namespace lpd::io {
 
 struct LasLayout {
   uint8_t version_minor = 2;     // LAS 1.x
@@ -43,6 +45,18 @@ int LasRecordLength(int format);
 // Reads a LAS file from `in` (no seeking, so pipes work); `name` stands for it in messages.
 // Throws std::runtime_error "NAME: reason" on anything malformed, truncated or unsupported.
 PointCloud ReadLas(const std::string& name, std::istream& in);
+
+// The same a record at a time: ReadLasHeader reads the header and the variable-length
+// records, VisitLasRecords then calls visit(p, values) for every point record, values holding
+// its fields in the order of `attributes` (names and types, no values), as ReadLas reads them.
+struct LasHeader {
+  LasLayout layout;
+  uint64_t count = 0;
+  std::vector<PointAttribute> attributes;
+};
+LasHeader ReadLasHeader(const std::string& name, std::istream& in);
+void VisitLasRecords(const std::string& name, std::istream& in, const LasHeader& header,
+                     const std::function<void(const energy::Point3&, const double*)>& visit);
 
 // Writes `cloud` as LAS to `out`: with cloud.las when it has one (its version, format, scale,
 // offset and records), else as LAS 1.2 format 0. Fields come from the attributes of the same

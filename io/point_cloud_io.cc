@@ -705,6 +705,12 @@ const PointAttribute* PointCloud::FindAttribute(const std::string& name) const {
 
 void ForEachPoint(const std::string& path, const std::function<void(const Point3&)>& visit) {
   const std::string extension = FileExtension(path);
+  if (extension == "las") {
+    std::ifstream in = OpenInput(path);
+    const LasHeader header = ReadLasHeader(path, in);
+    VisitLasRecords(path, in, header, [&](const Point3& p, const double*) { visit(p); });
+    return;
+  }
   if (extension != "xyz" && extension != "txt" && extension != "pts" && extension != "ply") {
     for (const Point3& p : ReadPoints(path)) visit(p);
     return;
@@ -796,6 +802,9 @@ std::vector<PointAttribute> StreamedAttributes(const std::string& path) {
             {element.properties[a].name, CanonicalPlyType(element.properties[a].type), {}});
       }
     }
+  } else if (extension == "las") {
+    std::ifstream in = OpenInput(path);
+    attributes = ReadLasHeader(path, in).attributes;
   } else if (IsXyz(extension)) {
     if (!FirstXyzLineHasColumns(path)) return attributes;
     const XyzColumns found = ReadXyzColumns(path);
@@ -837,6 +846,14 @@ void ForEachPointWithAttributes(
                 values.data());
           ++count;
         });
+  } else if (extension == "las") {
+    std::ifstream in = OpenInput(path);
+    const LasHeader header = ReadLasHeader(path, in);
+    check_count(header.attributes.size());
+    VisitLasRecords(path, in, header, [&](const Point3& p, const double* fields) {
+      visit(p, fields);
+      ++count;
+    });
   } else if (IsXyz(extension)) {
     // The attributes are the last columns (after the normals, when there are some).
     std::vector<double> line_columns;

@@ -71,14 +71,14 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
                           const std::string& name);
 energy::PointList ReadPoints(const std::string& path);
 
-// Calls visit(p) for every point of the file at `path` in file order, holding one line or
-// one PLY vertex at a time (.xyz/.txt/.pts and .ply; other formats are read whole first),
+// Calls visit(p) for every point of the file at `path` in file order, holding one line, PLY
+// vertex or LAS record at a time (.xyz/.txt/.pts, .ply, .las; other formats are read whole),
 // with the checks and errors of ReadPointCloud.
 void ForEachPoint(const std::string& path, const std::function<void(const energy::Point3&)>& visit);
 
-// The attributes ReadPointCloud reads from `path` (names and types, no values): a PLY's
-// header, an XYZ file read once (none without a column past x y z on its first point line),
-// other formats read whole.
+// The attributes ReadPointCloud reads from `path` (names and types, no values): a PLY's or
+// LAS file's header, an XYZ file read once (none without a column past x y z on its first
+// point line), other formats read whole.
 std::vector<PointAttribute> StreamedAttributes(const std::string& path);
 
 // ForEachPoint with those `attributes` (StreamedAttributes(path)): visit(p, values), values

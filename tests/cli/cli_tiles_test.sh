@@ -63,6 +63,15 @@ for r in range(count):
 assert count > 5900, count
 PY
 
+# A LAS input streams a record at a time and keeps its fields.
+cases=$((cases + 1))
+"$lpd" noise --shape=cad_part --points=6000 --sigma=0.005 -o "$dir/cloud.las" --quiet >/dev/null ||
+  fail "lpd noise .las"
+"$lpd" denoise "$dir/cloud.las" -o "$dir/las_out.ply" --tile_points=1500 --quiet \
+  >/dev/null 2>"$dir/stderr" || fail "LAS input: $(tail -1 "$dir/stderr")"
+head -c 2000 "$dir/las_out.ply" | grep -a -q "property uchar classification" ||
+  fail "LAS input: no classification in the tiled output"
+
 refused tiles_below_a_neighbourhood "fewer than the 41" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=40
 refused tiles_with_resume "cannot be combined" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --save_state=out.lpds
 refused tiles_with_input_normals "input_normals" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --initialization=input_normals

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -196,8 +197,10 @@ TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
   cloud.attributes = {{"score", "float", {0.5, 0.25, 1.0}}};
   const std::string binary = (directory_ / "binary.ply").string();
   io::WritePointCloud(binary, cloud, false);
+  const std::string las = (directory_ / "records.las").string();
+  io::WritePointCloud(las, cloud, false);
   const std::string paths[] = {
-      binary,
+      binary, las,
       Write("ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
                          "property float y\nproperty float z\nend_header\n1 2 3\n4 5 6\n"),
       Write("a.xyz", "# comment\n1 2 3 9 9\n\n4 5 6\n"),
@@ -216,6 +219,13 @@ TEST_F(PointCloudIoTest, StreamingVisitsTheSamePointsAndFailsTheSameWay) {
     EXPECT_EQ(StreamPoints(path).second, ReadError(path)) << bad;
     EXPECT_NE(ReadError(path), "") << bad;
   }
+  // A LAS file cut inside its last record.
+  std::ifstream whole(las, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(whole)), {});
+  const std::string cut = Write("cut.las", bytes.substr(0, bytes.size() - 5));
+  EXPECT_EQ(StreamPoints(cut).second, ReadError(cut));
+  EXPECT_NE(ReadError(cut).find("ends inside point record 2 of 3"), std::string::npos)
+      << ReadError(cut);
 }
 
 // What io::ForEachPointWithAttributes gives, as a cloud (points and attributes).
