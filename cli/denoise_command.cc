@@ -374,9 +374,9 @@ int RunDenoiseCommand(const std::vector<std::string>& arguments) {
           "points only)");
     }
     const std::string format = FLAGS_output.empty() ? "ply" : io::OutputFormat(FLAGS_output, "");
-    if (format == "las" || format == "pcd") {
-      throw std::invalid_argument("--tile_points writes its output point by point: give a .ply "
-                                  "or .xyz output (LAS and PCD are written whole)");
+    if (format == "pcd") {
+      throw std::invalid_argument("--tile_points writes its output point by point: give a .ply, "
+                                  ".las or .xyz output (PCD is written whole)");
     }
     return RunTiled(arguments, options, tiling);
   }

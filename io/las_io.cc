@@ -287,70 +287,74 @@ PointCloud ReadLas(const std::string& name, std::istream& in) {
   return cloud;
 }
 
-void WriteLas(std::ostream& out, const PointCloud& cloud, const std::string& name) {
-  if (!HostIsLittleEndian()) Fail(name, "LAS files are written on little-endian hosts only");
+LasLayout DefaultLasLayout(const energy::Point3& low, const energy::Point3& high) {
   LasLayout layout;
-  if (cloud.las) {
-    layout = *cloud.las;
-  } else if (!cloud.points.empty()) {
-    // Integer coordinates of at most 1e9 steps across the extent (int32 holds 2.1e9).
-    energy::Point3 low = cloud.points[0], high = cloud.points[0];
-    for (const energy::Point3& p : cloud.points) {
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-    const double extent = std::max((high - low).maxCoeff(), 1e-300);
-    const double scale = std::pow(10.0, std::ceil(std::log10(extent / 1e9)));
-    for (int c = 0; c < 3; ++c) {
-      layout.scale[c] = scale;
-      layout.offset[c] = low[c];
-    }
+  const double extent = std::max((high - low).maxCoeff(), 1e-300);
+  const double scale = std::pow(10.0, std::ceil(std::log10(extent / 1e9)));
+  for (int c = 0; c < 3; ++c) {
+    layout.scale[c] = scale;
+    layout.offset[c] = low[c];
   }
-  const int core = LasRecordLength(layout.point_format);
-  const std::vector<LasField>& fields = FieldsOf(layout.point_format);
-  const int extra_bytes = layout.record_length - core;
-  std::vector<const std::vector<double>*> values(fields.size() + extra_bytes, nullptr);
-  for (size_t f = 0; f < values.size(); ++f) {
+  return layout;
+}
+
+LasWriter::LasWriter(std::ostream& out, LasLayout layout,
+                     const std::vector<std::string>& attributes, std::string name)
+    : out_(out), layout_(std::move(layout)), name_(std::move(name)) {
+  if (!HostIsLittleEndian()) Fail(name_, "LAS files are written on little-endian hosts only");
+  const std::vector<LasField>& fields = FieldsOf(layout_.point_format);
+  const int extra_bytes = layout_.record_length - LasRecordLength(layout_.point_format);
+  source_.assign(fields.size() + extra_bytes, -1);
+  for (size_t f = 0; f < source_.size(); ++f) {
     const std::string field_name =
         f < fields.size() ? fields[f].name : "extra_byte_" + std::to_string(f - fields.size());
-    if (const PointAttribute* attribute = cloud.FindAttribute(field_name)) {
-      values[f] = &attribute->values;
-    }
+    const auto found = std::find(attributes.begin(), attributes.end(), field_name);
+    if (found != attributes.end()) source_[f] = static_cast<int>(found - attributes.begin());
   }
-  const int returns_field = static_cast<int>(
+  returns_field_ = static_cast<int>(
       std::find_if(fields.begin(), fields.end(),
                    [](const LasField& f) { return std::string(f.name) == "return_number"; }) -
       fields.begin());
+  record_.resize(layout_.record_length);
+  start_ = out_.tellp();
+  // Room for the header, written again on Finish, then the records.
+  const std::vector<char> header(HeaderSize(layout_.version_minor), 0);
+  out_.write(header.data(), static_cast<std::streamsize>(header.size()));
+  out_.write(layout_.vlrs.data(), static_cast<std::streamsize>(layout_.vlrs.size()));
+}
 
-  // The records first, for the header's bounds and counts.
-  const size_t n = cloud.points.size();
-  std::vector<char> records(n * layout.record_length, 0);
-  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
-  uint64_t by_return[15] = {};
-  for (size_t i = 0; i < n; ++i) {
-    char* record = records.data() + i * layout.record_length;
-    for (int c = 0; c < 3; ++c) {
-      const double steps = std::round((cloud.points[i][c] - layout.offset[c]) / layout.scale[c]);
-      if (!(std::abs(steps) <= std::numeric_limits<int32_t>::max())) {
-        Fail(name, "point " + std::to_string(i) + " does not fit the LAS scale and offset");
-      }
-      Put<int32_t>(record + 4 * c, static_cast<int32_t>(steps));
-      const double written = steps * layout.scale[c] + layout.offset[c];
-      low[c] = i == 0 ? written : std::min(low[c], written);
-      high[c] = i == 0 ? written : std::max(high[c], written);
+void LasWriter::Write(const energy::Point3& p, const double* values) {
+  const std::vector<LasField>& fields = FieldsOf(layout_.point_format);
+  const int core = LasRecordLength(layout_.point_format);
+  char* record = record_.data();
+  std::fill(record_.begin(), record_.end(), 0);
+  for (int c = 0; c < 3; ++c) {
+    const double steps = std::round((p[c] - layout_.offset[c]) / layout_.scale[c]);
+    if (!(std::abs(steps) <= std::numeric_limits<int32_t>::max())) {
+      Fail(name_, "point " + std::to_string(count_) + " does not fit the LAS scale and offset");
     }
-    for (size_t f = 0; f < fields.size(); ++f) {
-      if (values[f]) WriteValue(fields[f], (*values[f])[i], record);
-    }
-    for (int b = 0; b < extra_bytes; ++b) {
-      if (values[fields.size() + b]) {
-        record[core + b] = static_cast<char>(Clamped((*values[fields.size() + b])[i], 0, 255));
-      }
-    }
-    const int return_number = static_cast<int>(ReadValue(record, fields[returns_field]));
-    if (return_number >= 1 && return_number <= 15) ++by_return[return_number - 1];
+    Put<int32_t>(record + 4 * c, static_cast<int32_t>(steps));
+    const double written = steps * layout_.scale[c] + layout_.offset[c];
+    low_[c] = count_ == 0 ? written : std::min(low_[c], written);
+    high_[c] = count_ == 0 ? written : std::max(high_[c], written);
   }
+  for (size_t f = 0; f < fields.size(); ++f) {
+    if (source_[f] >= 0) WriteValue(fields[f], values[source_[f]], record);
+  }
+  for (size_t b = fields.size(); b < source_.size(); ++b) {
+    if (source_[b] >= 0) {
+      record[core + b - fields.size()] = static_cast<char>(Clamped(values[source_[b]], 0, 255));
+    }
+  }
+  const int return_number = static_cast<int>(ReadValue(record, fields[returns_field_]));
+  if (return_number >= 1 && return_number <= 15) ++by_return_[return_number - 1];
+  out_.write(record, layout_.record_length);
+  ++count_;
+}
 
+void LasWriter::Finish() {
+  const LasLayout& layout = layout_;
+  const uint64_t n = count_;
   const int header_size = HeaderSize(layout.version_minor);
   std::vector<char> header(header_size, 0);
   std::memcpy(header.data(), "LASF", 4);
@@ -373,26 +377,51 @@ void WriteLas(std::ostream& out, const PointCloud& cloud, const std::string& nam
   if (legacy) {
     Put<uint32_t>(header.data() + 107, static_cast<uint32_t>(n));
     for (int r = 0; r < 5; ++r) {
-      Put<uint32_t>(header.data() + 111 + 4 * r, static_cast<uint32_t>(by_return[r]));
+      Put<uint32_t>(header.data() + 111 + 4 * r, static_cast<uint32_t>(by_return_[r]));
     }
   } else if (layout.version_minor < 4) {
-    Fail(name, "LAS 1." + std::to_string(layout.version_minor) + " cannot hold " +
-                   std::to_string(n) + " points of format " +
-                   std::to_string(layout.point_format));
+    Fail(name_, "LAS 1." + std::to_string(layout.version_minor) + " cannot hold " +
+                    std::to_string(n) + " points of format " +
+                    std::to_string(layout.point_format));
   }
   for (int c = 0; c < 3; ++c) {
     Put<double>(header.data() + 131 + 8 * c, layout.scale[c]);
     Put<double>(header.data() + 155 + 8 * c, layout.offset[c]);
-    Put<double>(header.data() + 179 + 16 * c, high[c]);
-    Put<double>(header.data() + 187 + 16 * c, low[c]);
+    Put<double>(header.data() + 179 + 16 * c, high_[c]);
+    Put<double>(header.data() + 187 + 16 * c, low_[c]);
   }
   if (layout.version_minor >= 4) {
     Put<uint64_t>(header.data() + 247, n);
-    for (int r = 0; r < 15; ++r) Put<uint64_t>(header.data() + 255 + 8 * r, by_return[r]);
+    for (int r = 0; r < 15; ++r) Put<uint64_t>(header.data() + 255 + 8 * r, by_return_[r]);
   }
-  out.write(header.data(), header_size);
-  out.write(layout.vlrs.data(), static_cast<std::streamsize>(layout.vlrs.size()));
-  out.write(records.data(), static_cast<std::streamsize>(records.size()));
+  const std::streampos end = out_.tellp();
+  out_.seekp(start_);
+  out_.write(header.data(), header_size);
+  out_.seekp(end);
+  if (!out_) Fail(name_, "writing the LAS file failed");
+}
+
+void WriteLas(std::ostream& out, const PointCloud& cloud, const std::string& name) {
+  LasLayout layout;
+  if (cloud.las) {
+    layout = *cloud.las;
+  } else if (!cloud.points.empty()) {
+    energy::Point3 low = cloud.points[0], high = cloud.points[0];
+    for (const energy::Point3& p : cloud.points) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    layout = DefaultLasLayout(low, high);
+  }
+  std::vector<std::string> names;
+  for (const PointAttribute& attribute : cloud.attributes) names.push_back(attribute.name);
+  LasWriter writer(out, std::move(layout), names, name);
+  std::vector<double> values(names.size());
+  for (size_t i = 0; i < cloud.points.size(); ++i) {
+    for (size_t a = 0; a < names.size(); ++a) values[a] = cloud.attributes[a].values[i];
+    writer.Write(cloud.points[i], values.data());
+  }
+  writer.Finish();
 }
 
 }  // namespace lpd::io

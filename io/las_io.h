@@ -59,10 +59,39 @@ void VisitLasRecords(const std::string& name, std::istream& in, const LasHeader&
                      const std::function<void(const energy::Point3&, const double*)>& visit);
 
 // Writes `cloud` as LAS to `out`: with cloud.las when it has one (its version, format, scale,
-// offset and records), else as LAS 1.2 format 0. Fields come from the attributes of the same
-// names (0 when missing); the header's bounds, counts and counts by return are those of the
-// points written. Throws std::runtime_error if a coordinate does not fit the scale.
+// offset and records), else as LAS 1.2 format 0 (DefaultLasLayout of its bounding box).
+// Fields come from the attributes of the same names (0 when missing); the header's bounds,
+// counts and counts by return are those of the points written. Throws std::runtime_error if
+// a coordinate does not fit the scale.
 void WriteLas(std::ostream& out, const PointCloud& cloud, const std::string& name);
+
+// LAS 1.2, format 0, for points within [low, high]: integer coordinates of at most 1e9 steps
+// across the extent (int32 holds 2.1e9), offset at `low`.
+LasLayout DefaultLasLayout(const energy::Point3& low, const energy::Point3& high);
+
+// WriteLas a point at a time, to a seekable `out`: the header and the variable-length records
+// of `layout` first, the header again with the bounds and counts on Finish. Write takes one
+// value per name of `attributes`; the record's fields take the values of the attributes named
+// as they are (0 when none is).
+class LasWriter {
+ public:
+  LasWriter(std::ostream& out, LasLayout layout, const std::vector<std::string>& attributes,
+            std::string name);
+  void Write(const energy::Point3& p, const double* values);
+  void Finish();
+
+ private:
+  std::ostream& out_;
+  LasLayout layout_;
+  std::string name_;
+  std::streampos start_;
+  std::vector<int> source_;  // per record field, then extra byte: the attribute, or -1
+  int returns_field_ = 0;
+  std::vector<char> record_;
+  uint64_t count_ = 0;
+  double low_[3] = {0, 0, 0}, high_[3] = {0, 0, 0};
+  uint64_t by_return_[15] = {};
+};
 
 }  // namespace lpd::io
 

@@ -1,5 +1,6 @@
 #include "tiles/tile_store.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -14,7 +15,9 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include "io/atomic_output_file.h"
 #include "io/interruption.h"
+#include "io/las_io.h"
 #include "io/point_cloud_io.h"
 
 namespace lpd::tiles {
@@ -313,6 +316,30 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
     writer = std::make_unique<io::PointWriter>(output, overwrite, kept, /*with_normals=*/true,
                                                fields);
   };
+  // A LAS output: the input's fields (and its header, when the input is LAS), lpd's flags
+  // as class 7 (low noise) on the outliers that --outliers=mark keeps, as untiled runs write.
+  std::unique_ptr<io::AtomicOutputFile> las_file;
+  std::unique_ptr<io::LasWriter> las_writer;
+  int classification = -1;
+  auto open_las = [&](const std::vector<io::PointAttribute>& attributes) {
+    std::vector<std::string> names;
+    for (const io::PointAttribute& attribute : attributes) names.push_back(attribute.name);
+    classification = static_cast<int>(
+        std::find(names.begin(), names.end(), "classification") - names.begin());
+    if (classification == static_cast<int>(names.size())) names.push_back("classification");
+    io::LasLayout layout;
+    if (io::FileExtension(input) == "las") {
+      std::ifstream in(input, std::ios::binary);
+      layout = io::ReadLasHeader(input, in).layout;
+    } else {
+      Eigen::AlignedBox3d box;
+      for (const TileSummary& tile : tiles) box.extend(tile.box);
+      layout = io::DefaultLasLayout(box.min(), box.max());
+    }
+    las_file = std::make_unique<io::AtomicOutputFile>(output, overwrite);
+    las_writer = std::make_unique<io::LasWriter>(las_file->stream(), std::move(layout), names,
+                                                 output);
+  };
   std::vector<double> values;
   auto write = [&](uint32_t index, const energy::Point3& p, const double* attributes) {
     if (index >= count || !filled[index]) {
@@ -329,16 +356,29 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
       }
     }
     values.assign(attributes, attributes + num_attributes);
+    const energy::Point3 position(r.position[0], r.position[1], r.position[2]);
+    if (las_writer) {
+      values.resize(std::max<size_t>(values.size(), classification + 1), 0.0);
+      constexpr double kLowNoise = 7;  // ASPRS class 7
+      if (r.is_outlier) values[classification] = kLowNoise;
+      las_writer->Write(position, values.data());
+      return;
+    }
     values.insert(values.end(), {static_cast<double>(r.is_outlier), r.outlier_score,
                                  static_cast<double>(r.is_feature), r.feature_score,
                                  seam ? 1.0 : 0.0, static_cast<double>(index),
                                  static_cast<double>(t)});
-    writer->Write(energy::Point3(r.position[0], r.position[1], r.position[2]),
-                  energy::Point3(r.normal[0], r.normal[1], r.normal[2]), values.data());
+    writer->Write(position, energy::Point3(r.normal[0], r.normal[1], r.normal[2]),
+                  values.data());
   };
   const std::vector<io::PointAttribute> attributes =
       input.empty() ? std::vector<io::PointAttribute>() : io::StreamedAttributes(input);
-  open_writer(attributes);
+  if (io::OutputFormat(output, "") == "las") {
+    open_las(attributes);
+    num_attributes = attributes.size();
+  } else {
+    open_writer(attributes);
+  }
   if (attributes.empty()) {
     Scan([&](uint32_t index, const energy::Point3& p) { write(index, p, nullptr); });
   } else {
@@ -358,7 +398,12 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
                                    });
     if (index != count) throw std::runtime_error(input + " changed while it was denoised");
   }
-  writer->Commit();
+  if (las_writer) {
+    las_writer->Finish();
+    las_file->Commit();
+  } else {
+    writer->Commit();
+  }
 }
 
 }  // namespace lpd::tiles

@@ -134,7 +134,6 @@ refuse pcd_claims_4e9_points 1 denoise "$dir/huge_count.pcd" -o out.ply
 refuse pcd_every_point_nan 1 denoise "$dir/all_nan.pcd" -o out.ply
 refuse pcd_corrupt_compression 1 denoise "$dir/corrupt_lzf.pcd" -o out.ply
 refuse pcd_output_of_tiles 1 denoise "$dir/organized.pcd" -o out.pcd --tile_points=500
-refuse las_output_of_tiles 1 denoise "$dir/organized.pcd" -o out.las --tile_points=500
 refuse ply_binary_nan 1 denoise "$dir/nan_binary.ply" -o out.ply
 refuse ply_list_past_body 1 denoise "$dir/list_past_body.ply" -o out.ply
 refuse ply_unknown_format 1 denoise "$dir/unknown_format.ply" -o out.ply

@@ -71,6 +71,45 @@ cases=$((cases + 1))
   >/dev/null 2>"$dir/stderr" || fail "LAS input: $(tail -1 "$dir/stderr")"
 head -c 2000 "$dir/las_out.ply" | grep -a -q "property uchar classification" ||
   fail "LAS input: no classification in the tiled output"
+# And a LAS output, a record at a time: the tiled PLY's points (to the LAS scale), its
+# outliers kept by --outliers=mark as class 7, the header's count and bounds those of the
+# records.
+cases=$((cases + 1))
+"$lpd" noise --shape=cad_part --points=6000 --sigma=0.005 --outlier_ratio=0.05 \
+  -o "$dir/noisy_with_outliers.las" --quiet >/dev/null || fail "lpd noise outliers .las"
+for out in marked.las marked.ply; do
+  "$lpd" denoise "$dir/noisy_with_outliers.las" -o "$dir/$out" --tile_points=1500 --outliers=mark --quiet \
+    >/dev/null 2>"$dir/stderr" || fail "LAS output: $(tail -1 "$dir/stderr")"
+done
+python3 - "$dir/marked.las" "$dir/marked.ply" <<'PY' || fail "LAS output: records differ from the tiled PLY"
+import struct, sys
+las = open(sys.argv[1], "rb").read()
+offset, = struct.unpack_from("<I", las, 96)
+length, count = struct.unpack_from("<HI", las, 105)
+scale, shift = struct.unpack_from("<3d", las, 131), struct.unpack_from("<3d", las, 155)
+high_low = struct.unpack_from("<6d", las, 179)
+assert len(las) == offset + count * length, (len(las), offset, count, length)
+records = [struct.unpack_from("<3i", las, offset + i * length) for i in range(count)]
+points = [[x * s + o for x, s, o in zip(r, scale, shift)] for r in records]
+classes = [las[offset + i * length + 15] & 31 for i in range(count)]
+ply = open(sys.argv[2], "rb").read()
+header, body = ply.split(b"end_header\n", 1)
+lines = header.decode().splitlines()
+props = [l.split()[1:] for l in lines if l.startswith("property")]
+codes = {"double": "d", "float": "f", "uchar": "B", "char": "b", "ushort": "H", "short": "h",
+         "int": "i", "uint": "I"}
+record = struct.Struct("<" + "".join(codes[t] for t, _ in props))
+names = [n for _, n in props]
+rows = [dict(zip(names, record.unpack_from(body, r * record.size))) for r in range(count)]
+assert len(body) == count * record.size
+for p, c, row in zip(points, classes, rows):
+    assert max(abs(a - row[k]) for a, k in zip(p, "xyz")) <= max(scale), (p, row)
+    assert (c == 7) == (row["outlier"] == 1), (c, row["outlier"])
+for axis in range(3):
+    values = [p[axis] for p in points]
+    assert abs(high_low[2 * axis] - max(values)) < 1e-12 and abs(high_low[2 * axis + 1] - min(values)) < 1e-12
+assert sum(classes[i] == 7 for i in range(count)) > 100, sum(c == 7 for c in classes)
+PY
 
 refused tiles_below_a_neighbourhood "fewer than the 41" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=40
 refused tiles_with_resume "cannot be combined" "$lpd" denoise cloud.xyz -o out.xyz --tile_points=1500 --save_state=out.lpds
