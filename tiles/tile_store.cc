@@ -62,6 +62,102 @@ Record Unpack(const char* in) {
 
 // A file of `size` bytes created at `path` and mapped into memory for reading and writing;
 // removed when the object goes.
+// Where the merge writes the kept points, in input order.
+class MergedOutput {
+ public:
+  virtual ~MergedOutput() = default;
+  // Point `index` of tile `tile`, its result `r` and its input row's `attributes`.
+  virtual void Write(uint32_t index, int tile, bool seam, const Record& r,
+                     const double* attributes) = 0;
+  virtual void Commit() = 0;
+};
+
+// PLY (or XYZ): normals, the input's attributes (input_NAME where a name is one of lpd's
+// fields), then lpd's fields.
+class PointOutput : public MergedOutput {
+ public:
+  PointOutput(const std::string& output, bool overwrite, size_t count,
+              const std::vector<io::PointAttribute>& attributes)
+      : num_attributes_(attributes.size()) {
+    const std::vector<std::pair<std::string, std::string>> lpd_fields = {
+        {"outlier", "float"}, {"outlier_score", "float"}, {"feature", "float"},
+        {"feature_score", "float"}, {"seam", "float"}, {"source_index", "uint"},
+        {"tile", "uint"}};
+    std::vector<std::pair<std::string, std::string>> fields;
+    auto taken = [&](const std::string& name) {
+      auto named = [&name](const auto& field) { return field.first == name; };
+      return std::any_of(fields.begin(), fields.end(), named) ||
+             std::any_of(lpd_fields.begin(), lpd_fields.end(), named);
+    };
+    for (const io::PointAttribute& attribute : attributes) {
+      std::string name = attribute.name;
+      while (taken(name)) name = "input_" + name;
+      fields.emplace_back(name, attribute.type);
+    }
+    fields.insert(fields.end(), lpd_fields.begin(), lpd_fields.end());
+    writer_ = std::make_unique<io::PointWriter>(output, overwrite, count, /*with_normals=*/true,
+                                                fields);
+  }
+  void Write(uint32_t index, int tile, bool seam, const Record& r,
+             const double* attributes) override {
+    values_.assign(attributes, attributes + num_attributes_);
+    values_.insert(values_.end(), {static_cast<double>(r.is_outlier), r.outlier_score,
+                                   static_cast<double>(r.is_feature), r.feature_score,
+                                   seam ? 1.0 : 0.0, static_cast<double>(index),
+                                   static_cast<double>(tile)});
+    writer_->Write(energy::Point3(r.position[0], r.position[1], r.position[2]),
+                   energy::Point3(r.normal[0], r.normal[1], r.normal[2]), values_.data());
+  }
+  void Commit() override { writer_->Commit(); }
+
+ private:
+  size_t num_attributes_;
+  std::unique_ptr<io::PointWriter> writer_;
+  std::vector<double> values_;
+};
+
+// LAS, a record at a time: the input's fields and, when the input is LAS, its header (else
+// one for the points' bounding box `box`); class 7 (low noise) on the outliers that
+// --outliers=mark keeps, as untiled runs write them.
+class LasOutput : public MergedOutput {
+ public:
+  LasOutput(const std::string& input, const std::string& output, bool overwrite,
+            const std::vector<io::PointAttribute>& attributes, const Eigen::AlignedBox3d& box)
+      : num_attributes_(attributes.size()), file_(output, overwrite) {
+    std::vector<std::string> names;
+    for (const io::PointAttribute& attribute : attributes) names.push_back(attribute.name);
+    classification_ = std::find(names.begin(), names.end(), "classification") - names.begin();
+    if (classification_ == names.size()) names.push_back("classification");
+    io::LasLayout layout;
+    if (io::FileExtension(input) == "las") {
+      std::ifstream in(input, std::ios::binary);
+      layout = io::ReadLasHeader(input, in).layout;
+    } else {
+      layout = io::DefaultLasLayout(box.min(), box.max());
+    }
+    values_.resize(names.size(), 0.0);
+    writer_ = std::make_unique<io::LasWriter>(file_.stream(), std::move(layout), names, output);
+  }
+  void Write(uint32_t, int, bool, const Record& r, const double* attributes) override {
+    std::copy_n(attributes, num_attributes_, values_.begin());
+    if (classification_ == num_attributes_) values_[classification_] = 0.0;
+    constexpr double kLowNoise = 7;  // ASPRS class 7
+    if (r.is_outlier) values_[classification_] = kLowNoise;
+    writer_->Write(energy::Point3(r.position[0], r.position[1], r.position[2]), values_.data());
+  }
+  void Commit() override {
+    writer_->Finish();
+    file_.Commit();
+  }
+
+ private:
+  size_t num_attributes_;
+  size_t classification_;
+  io::AtomicOutputFile file_;
+  std::unique_ptr<io::LasWriter> writer_;
+  std::vector<double> values_;
+};
+
 class MappedFile {
  public:
   MappedFile(const std::string& path, size_t size) : path_(path), size_(size) {
@@ -290,58 +386,17 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
       io::ThrowIfInterrupted();
     }
   }
-  const std::vector<std::pair<std::string, std::string>> lpd_fields = {
-      {"outlier", "float"}, {"outlier_score", "float"}, {"feature", "float"},
-      {"feature_score", "float"}, {"seam", "float"}, {"source_index", "uint"}, {"tile", "uint"}};
-  std::unique_ptr<io::PointWriter> writer;
-  size_t num_attributes = 0;
-  auto open_writer = [&](const std::vector<io::PointAttribute>& attributes) {
-    std::vector<std::pair<std::string, std::string>> fields;
-    auto taken = [&](const std::string& name) {
-      for (const auto& field : fields) {
-        if (field.first == name) return true;
-      }
-      for (const auto& field : lpd_fields) {
-        if (field.first == name) return true;
-      }
-      return false;
-    };
-    for (const io::PointAttribute& attribute : attributes) {
-      std::string name = attribute.name;
-      while (taken(name)) name = "input_" + name;
-      fields.emplace_back(name, attribute.type);
-    }
-    num_attributes = fields.size();
-    fields.insert(fields.end(), lpd_fields.begin(), lpd_fields.end());
-    writer = std::make_unique<io::PointWriter>(output, overwrite, kept, /*with_normals=*/true,
-                                               fields);
-  };
-  // A LAS output: the input's fields (and its header, when the input is LAS), lpd's flags
-  // as class 7 (low noise) on the outliers that --outliers=mark keeps, as untiled runs write.
-  std::unique_ptr<io::AtomicOutputFile> las_file;
-  std::unique_ptr<io::LasWriter> las_writer;
-  int classification = -1;
-  auto open_las = [&](const std::vector<io::PointAttribute>& attributes) {
-    std::vector<std::string> names;
-    for (const io::PointAttribute& attribute : attributes) names.push_back(attribute.name);
-    classification = static_cast<int>(
-        std::find(names.begin(), names.end(), "classification") - names.begin());
-    if (classification == static_cast<int>(names.size())) names.push_back("classification");
-    io::LasLayout layout;
-    if (io::FileExtension(input) == "las") {
-      std::ifstream in(input, std::ios::binary);
-      layout = io::ReadLasHeader(input, in).layout;
-    } else {
-      Eigen::AlignedBox3d box;
-      for (const TileSummary& tile : tiles) box.extend(tile.box);
-      layout = io::DefaultLasLayout(box.min(), box.max());
-    }
-    las_file = std::make_unique<io::AtomicOutputFile>(output, overwrite);
-    las_writer = std::make_unique<io::LasWriter>(las_file->stream(), std::move(layout), names,
-                                                 output);
-  };
-  std::vector<double> values;
-  auto write = [&](uint32_t index, const energy::Point3& p, const double* attributes) {
+  const std::vector<io::PointAttribute> attributes =
+      input.empty() ? std::vector<io::PointAttribute>() : io::StreamedAttributes(input);
+  std::unique_ptr<MergedOutput> merged;
+  if (io::OutputFormat(output, "") == "las") {
+    Eigen::AlignedBox3d box;
+    for (const TileSummary& tile : tiles) box.extend(tile.box);
+    merged = std::make_unique<LasOutput>(input, output, overwrite, attributes, box);
+  } else {
+    merged = std::make_unique<PointOutput>(output, overwrite, kept, attributes);
+  }
+  auto write = [&](uint32_t index, const energy::Point3& p, const double* row) {
     if (index >= count || !filled[index]) {
       throw std::runtime_error("no tile holds the result of point " + std::to_string(index));
     }
@@ -355,30 +410,8 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
         break;
       }
     }
-    values.assign(attributes, attributes + num_attributes);
-    const energy::Point3 position(r.position[0], r.position[1], r.position[2]);
-    if (las_writer) {
-      values.resize(std::max<size_t>(values.size(), classification + 1), 0.0);
-      constexpr double kLowNoise = 7;  // ASPRS class 7
-      if (r.is_outlier) values[classification] = kLowNoise;
-      las_writer->Write(position, values.data());
-      return;
-    }
-    values.insert(values.end(), {static_cast<double>(r.is_outlier), r.outlier_score,
-                                 static_cast<double>(r.is_feature), r.feature_score,
-                                 seam ? 1.0 : 0.0, static_cast<double>(index),
-                                 static_cast<double>(t)});
-    writer->Write(position, energy::Point3(r.normal[0], r.normal[1], r.normal[2]),
-                  values.data());
+    merged->Write(index, t, seam, r, row);
   };
-  const std::vector<io::PointAttribute> attributes =
-      input.empty() ? std::vector<io::PointAttribute>() : io::StreamedAttributes(input);
-  if (io::OutputFormat(output, "") == "las") {
-    open_las(attributes);
-    num_attributes = attributes.size();
-  } else {
-    open_writer(attributes);
-  }
   if (attributes.empty()) {
     Scan([&](uint32_t index, const energy::Point3& p) { write(index, p, nullptr); });
   } else {
@@ -398,12 +431,7 @@ void TileStore::Merge(const solvers::TileTree& tree, const std::vector<TileSumma
                                    });
     if (index != count) throw std::runtime_error(input + " changed while it was denoised");
   }
-  if (las_writer) {
-    las_writer->Finish();
-    las_file->Commit();
-  } else {
-    writer->Commit();
-  }
+  merged->Commit();
 }
 
 }  // namespace lpd::tiles
