@@ -122,22 +122,30 @@ bool IsBlankOrComment(const std::string& line) {
 
 constexpr char kNoPoints[] = "the file contains no points";
 
+// The next point line of an XYZ file (past blank and comment lines, `number` counting the
+// lines read): its point p and `rest` pointing past x y z in *line; false at the end.
+bool NextXyzPoint(const std::string& path, std::istream& in, std::string* line, long* number,
+                  Point3* p, const char** rest) {
+  while (ReadLine(path, in, line, *number + 1)) {
+    ++*number;
+    if (IsBlankOrComment(*line)) continue;
+    if (!ParseThreeNumbers(line->c_str(), p, rest)) {
+      Fail(path, *number, "expected three numbers 'x y z', got '" + Excerpt(*line) + "'");
+    }
+    CheckFinite(path, *number, *p);
+    return true;
+  }
+  return false;
+}
+
 // Calls visit(p, rest) for every point line of an XYZ file, `rest` pointing past x y z.
 template <class Visit>
 void VisitXyz(const std::string& path, std::istream& in, Visit visit) {
   std::string line;
   long number = 0;
-  while (ReadLine(path, in, &line, number + 1)) {
-    ++number;
-    if (IsBlankOrComment(line)) continue;
-    Point3 p;
-    const char* rest = nullptr;
-    if (!ParseThreeNumbers(line.c_str(), &p, &rest)) {
-      Fail(path, number, "expected three numbers 'x y z', got '" + Excerpt(line) + "'");
-    }
-    CheckFinite(path, number, p);
-    visit(p, rest);
-  }
+  Point3 p;
+  const char* rest = nullptr;
+  while (NextXyzPoint(path, in, &line, &number, &p, &rest)) visit(p, rest);
 }
 
 // The numbers of `text` (the columns after x y z); false if one is not a number.
@@ -774,16 +782,11 @@ bool FirstXyzLineHasColumns(const std::string& path) {
   SkipByteOrderMark(path, in);
   std::string line;
   long number = 0;
-  while (ReadLine(path, in, &line, number + 1)) {
-    ++number;
-    if (IsBlankOrComment(line)) continue;
-    Point3 p;
-    const char* rest = nullptr;
-    std::vector<double> columns;
-    return !ParseThreeNumbers(line.c_str(), &p, &rest) || !ParseColumns(rest, &columns) ||
-           !columns.empty();
-  }
-  return false;
+  Point3 p;
+  const char* rest = nullptr;
+  std::vector<double> columns;
+  return NextXyzPoint(path, in, &line, &number, &p, &rest) &&
+         (!ParseColumns(rest, &columns) || !columns.empty());
 }
 
 }  // namespace
@@ -862,9 +865,9 @@ void ForEachPointWithAttributes(
     SkipByteOrderMark(path, in);
     VisitXyz(path, in, [&](const Point3& p, const char* rest) {
       if (!attributes.empty()) {
-        if (count == 0 && ParseColumns(rest, &line_columns)) columns = line_columns.size();
-        if (!ParseColumns(rest, &line_columns) || line_columns.size() != columns ||
-            columns < attributes.size()) {
+        const bool parsed = ParseColumns(rest, &line_columns);
+        if (count == 0) columns = line_columns.size();
+        if (!parsed || line_columns.size() != columns || columns < attributes.size()) {
           check_count(0);
         }
       }
