@@ -33,6 +33,7 @@ std::vector<std::pair<std::string, std::string>> Derived(const solvers::DenoiseO
           {"spacing", JsonNumber(result.neighborhood.spacing)},
           {"k_radius_sigmas", JsonNumber(result.neighborhood.radius_in_sigmas)},
           {"two_sheet_fraction", JsonNumber(result.neighborhood.two_sheet_fraction)},
+          {"thin_candidate_fraction", JsonNumber(result.neighborhood.thin_candidate_fraction)},
           {"eta", JsonNumber(result.summary.eta)},
           {"lambda", JsonNumber(result.summary.lambda)},
           {"mu_l", JsonNumber(result.summary.mu_l)},

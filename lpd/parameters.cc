@@ -183,9 +183,10 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
       Flag("k_wide_noise", kBoth,
            {kNeighbours,
             "with k auto, where the noise probe reads sigma above 1.15 spacings (where it reads "
-            "low, as measured on a noisy plane), widen the radius by the plane's under-reading: "
-            "better at noise well above the spacing, worse on thin parts whose sides are under "
-            "3 noise deviations apart; slower (k up to max_k)"},
+            "low, as measured on a noisy plane), widen the radius by the plane's under-reading, "
+            "less and not at all as 5% to 9% of the probe's regions nearly split into two "
+            "sides (a thin part the wider k would merge); k up to max_k",
+            "", "false"},
            [](O& o) -> bool& { return o.neighborhood.wide_noise; }),
       Integer("max_k", kBoth, {kNeighbours, "with k auto, the largest k chosen"},
               [](O& o) -> int& { return o.neighborhood.max_k; }),

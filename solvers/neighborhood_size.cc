@@ -74,9 +74,15 @@ double PlaneReadFraction(double read_ratio) {
   return lower->fraction + t * (upper->fraction - lower->fraction);
 }
 
-double WideNoiseFactor(double read_ratio) {
+double WideNoiseFactor(double read_ratio, double thin_candidate_fraction) {
   if (!(read_ratio > kCalibratedReadRatio)) return 1.0;
-  return PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(read_ratio);
+  const double plane_factor =
+      PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(read_ratio);
+  // The weight falls linearly from 1 to 0 between the two shares.
+  const double weight = std::clamp((kThinShareForNoWidening - thin_candidate_fraction) /
+                                       (kThinShareForNoWidening - kThinShareForFullWidening),
+                                   0.0, 1.0);
+  return 1.0 + weight * (plane_factor - 1.0);
 }
 
 NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
@@ -149,8 +155,8 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     query_of[point_of(query)] = query;
   }
   std::vector<double> residuals(offsets.size());
-  int thin = 0;
-#pragma omp parallel for schedule(static) num_threads(num_threads) reduction(+ : thin)
+  int thin = 0, candidates = 0;
+#pragma omp parallel for schedule(static) num_threads(num_threads) reduction(+ : thin, candidates)
   for (int query = 0; query < queries; ++query) {
     const size_t row = static_cast<size_t>(query) * (k + 1);
     energy::RegionSplits region;
@@ -160,6 +166,7 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     }
     const bool two_sheets = region.TwoSides(energy::kThinRegionSeparation);
     thin += two_sheets;
+    candidates += region.TwoSides(energy::kThinRegionGrowthSeparation);
     if (!two_sheets) {
       for (int a = 0; a <= k; ++a) residuals[row + a] = std::abs(offsets[row + a]);
       continue;
@@ -197,6 +204,7 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
                                  [](double r) { return std::isnan(r); }),
                   residuals.end());
   size.two_sheet_fraction = static_cast<double>(thin) / queries;
+  size.thin_candidate_fraction = static_cast<double>(candidates) / queries;
   if (kept) {
     kept->splits = std::move(splits);
     size.split_search = std::move(kept);
@@ -211,10 +219,12 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
         "most points coincide with their " + std::to_string(k) +
         " nearest neighbours: no spacing to choose k from (remove the duplicates or give --k)");
   }
-  // Past the calibrated range the probe reads the noise ever lower (WideNoiseFactor).
+  // Past the calibrated range the probe reads the noise ever lower, unless the sides of thin
+  // parts read as wide noise (WideNoiseFactor).
   size.radius_in_sigmas = options.radius_in_sigmas;
   if (options.wide_noise) {
-    size.radius_in_sigmas *= WideNoiseFactor(size.noise_sigma / size.spacing);
+    size.radius_in_sigmas *=
+        WideNoiseFactor(size.noise_sigma / size.spacing, size.thin_candidate_fraction);
   }
   const double radius_in_spacings = size.radius_in_sigmas * size.noise_sigma / size.spacing;
   const double chosen = M_PI * radius_in_spacings * radius_in_spacings;

@@ -23,10 +23,15 @@
 // plane, the read sigma is 0.83 of the true one where it reads 1.0 spacing, 0.70 at 1.15,
 // 0.54 at 1.26, 0.41 at 1.31. c was calibrated up to kCalibratedReadRatio (FANDISK 0.03 reads
 // 1.07; the learned denoisers' benchmark at 50,000 points and 2% noise, 1.03-1.23, where 4.15
-// was about best). With wide_noise, c grows past it by the plane's further fall
-// (WideNoiseFactor): JOINT 0.03 (1.28) and the benchmark's meshes at 3% come out closer, but
-// thin parts whose sides the probe cannot tell apart read as wide noise too and come out
-// worse, so it is off by default (docs/method.md, "Noise near the spacing").
+// was about best). Past it, c grows by the plane's further fall (WideNoiseFactor): JOINT 0.03
+// (1.28) and the benchmark's meshes at 3% come out closer. But a thin part whose sides are
+// under about 3 noise deviations apart reads as one sheet with wide noise, and a wider k
+// merges its sides further (a plate 2 deviations thick came out worse than its input). Such
+// a part shows in the probe's regions as many that nearly split (the share passing
+// kThinRegionGrowthSeparation, sheet_split.h: 1-6% of the probes on the benchmark's meshes
+// at 50,000 points, 6-14% on plates, sheets, thin cylinders and thin-walled boxes whose sides
+// are 1.4-2.8 deviations apart), so the widening fades out between those shares
+// (docs/method.md, "Noise near the spacing").
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 #define LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 
@@ -43,9 +48,8 @@ struct NeighborhoodSizeOptions {
   double radius_in_sigmas = 4.15;
   int min_k = 12;
   int max_k = 150;
-  // c x WideNoiseFactor instead of c (off by default: docs/method.md, "Noise near the
-  // spacing").
-  bool wide_noise = false;
+  // c x WideNoiseFactor instead of c (docs/method.md, "Noise near the spacing"; paper: no).
+  bool wide_noise = true;
   // Measure each side of a thin part from its own plane (energy/sheet_split.h; paper: no).
   bool split_sheets = true;
   // The largest problem solved, in neighbour entries n k; past it a subsample is solved
@@ -63,10 +67,17 @@ double PlaneReadFraction(double read_ratio);
 // The probe's read sigma / spacing up to which c holds.
 constexpr double kCalibratedReadRatio = 1.15;
 
-// c's factor at this read sigma / spacing: 1 up to kCalibratedReadRatio, then the fraction of
-// the true sigma the probe reads on a plane there over the fraction it reads at
-// kCalibratedReadRatio (1.09 at 1.2, 1.30 at 1.26, held at 1.68 from 1.31 on).
-double WideNoiseFactor(double read_ratio);
+// The share of the probe's regions that nearly split (thin_candidate_fraction below) up to
+// which c widens fully past kCalibratedReadRatio, and from which it does not widen.
+constexpr double kThinShareForFullWidening = 0.05;
+constexpr double kThinShareForNoWidening = 0.09;
+
+// c's factor at this read sigma / spacing: 1 up to kCalibratedReadRatio; past it, the
+// fraction of the true sigma the probe reads on a plane there over the fraction it reads at
+// kCalibratedReadRatio (1.09 at 1.2, 1.30 at 1.26, held at 1.68 from 1.31 on), the excess over
+// 1 weighted from 1 down to 0 as the share of nearly split regions goes from
+// kThinShareForFullWidening to kThinShareForNoWidening.
+double WideNoiseFactor(double read_ratio, double thin_candidate_fraction);
 
 struct NeighborhoodSize {
   double noise_sigma = 0.0;  // in the normalized frame (bounding-box diagonal 1)
@@ -74,6 +85,9 @@ struct NeighborhoodSize {
   double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
+  // Of the probe neighbourhoods, those whose region passes the growth bar
+  // (kThinRegionGrowthSeparation): sides too close to split, read as one sheet.
+  double thin_candidate_fraction = 0.0;
   // With split_sheets and every point probed (at most 131,072 points): each point's wider
   // search and its split, for BuildProblem to reuse on the same points; else null.
   std::shared_ptr<const energy::SplitSearch> split_search;

@@ -45,8 +45,7 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
       experiments::MakeShape(experiments::ParseShapeSpec("sheets:size=1,gap=0.5"));
   const energy::PointList clean =
       experiments::PoissonDiskSample(sheets, 20000, /*seed=*/11).points;
-  NeighborhoodSizeOptions options;
-  options.wide_noise = true;
+  const NeighborhoodSizeOptions options;  // wide_noise by default
   for (const double sigma : {0.015, 0.024, 0.0375}) {  // reads about 1.0, 1.17 and 1.26
     std::mt19937_64 rng(7);
     std::normal_distribution<double> normal(0.0, sigma);
@@ -58,21 +57,53 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
     EXPECT_NEAR(size.noise_sigma / true_sigma, PlaneReadFraction(read_ratio),
                 0.05 * PlaneReadFraction(read_ratio))
         << "sigma " << sigma << ", read sigma / spacing " << read_ratio;
-    // With wide_noise, k follows c x WideNoiseFactor, which holds c up to
-    // kCalibratedReadRatio.
+    // Sheets far apart: few regions nearly split, and past kCalibratedReadRatio c widens by
+    // the plane's whole further fall.
+    EXPECT_LT(size.thin_candidate_fraction, kThinShareForFullWidening) << "sigma " << sigma;
     const double factor = read_ratio > kCalibratedReadRatio
                               ? PlaneReadFraction(kCalibratedReadRatio) /
                                     PlaneReadFraction(read_ratio)
                               : 1.0;
     EXPECT_DOUBLE_EQ(size.radius_in_sigmas, options.radius_in_sigmas * factor);
-    NeighborhoodSizeOptions plain = options;  // the default: c as given
+    NeighborhoodSizeOptions plain = options;  // c as given
     plain.wide_noise = false;
     EXPECT_EQ(ChooseNeighborhoodSize(noisy, plain, 2).radius_in_sigmas,
               options.radius_in_sigmas);
   }
-  EXPECT_EQ(WideNoiseFactor(0.5), 1.0);
-  EXPECT_EQ(WideNoiseFactor(kCalibratedReadRatio), 1.0);
-  EXPECT_GT(WideNoiseFactor(1.26), 1.25);
+}
+
+// The factor in closed form: the plane's fall past kCalibratedReadRatio, its excess over 1
+// weighted linearly down to 0 between the two shares of nearly split regions.
+TEST(NeighborhoodSize, WideNoiseFactorFadesWithTheShareOfNearlySplitRegions) {
+  EXPECT_EQ(WideNoiseFactor(0.5, 0.0), 1.0);
+  EXPECT_EQ(WideNoiseFactor(kCalibratedReadRatio, 0.0), 1.0);
+  const double plane = PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(1.26);
+  EXPECT_GT(plane, 1.25);
+  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, 0.0), plane);
+  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, kThinShareForFullWidening), plane);
+  const double middle = 0.5 * (kThinShareForFullWidening + kThinShareForNoWidening);
+  EXPECT_NEAR(WideNoiseFactor(1.26, middle), 1.0 + 0.5 * (plane - 1.0), 1e-12);
+  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, kThinShareForNoWidening), 1.0);
+  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, 0.5), 1.0);
+}
+
+// A plate about 2 noise deviations thick at noise wider than the spacing (the learned
+// denoisers' plate_t0.03 at 50,000 points and 2%): it reads as one sheet with wide noise,
+// past kCalibratedReadRatio, but many of its regions nearly split, so c does not widen (a
+// wider k merged its sides: docs/method.md, "Noise near the spacing").
+TEST(NeighborhoodSize, AThinPlateReadAsWideNoiseDoesNotWiden) {
+  const experiments::ProceduralShape plate =
+      experiments::MakeShape(experiments::ParseShapeSpec("box:size_x=1,size_y=1,size_z=0.03"));
+  energy::PointList points = experiments::PoissonDiskSample(plate, 50000, /*seed=*/3).points;
+  const double sigma = 0.02 * std::sqrt(0.5 + 0.015 * 0.015);  // 2% of the radius
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> normal(0.0, sigma);
+  for (energy::Point3& p : points) p += energy::Point3(normal(rng), normal(rng), normal(rng));
+  const NeighborhoodSizeOptions options;
+  const NeighborhoodSize size = ChooseNeighborhoodSize(points, options, 2);
+  EXPECT_GT(size.noise_sigma / size.spacing, kCalibratedReadRatio);
+  EXPECT_GT(size.thin_candidate_fraction, kThinShareForNoWidening);
+  EXPECT_EQ(size.radius_in_sigmas, options.radius_in_sigmas);
 }
 
 TEST(NeighborhoodSize, StaysWithinItsBoundsAndRefusesTooFewPoints) {
