@@ -70,6 +70,7 @@ std::string RunSummaryJson(const RunDescription& run, const solvers::DenoiseOpti
        {"far", Integer(result.num_far)},
        {"duplicates", Integer(result.num_duplicates)},
        {"near_repeats", Integer(result.num_near_repeats)},
+       {"separated", Integer(result.num_separated)},
        {"removed", Integer(result.num_removed)},
        {"output_feature_points", Integer(features)}});
   return io::JsonObject(

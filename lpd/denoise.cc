@@ -44,6 +44,7 @@ Summary MakeSummary(const solvers::DenoiseResult& run, const solvers::DenoiseOpt
   summary.far = run.num_far;
   summary.duplicates = run.num_duplicates;
   summary.near_repeats = run.num_near_repeats;
+  summary.separated = run.num_separated;
   summary.removed = run.num_removed;
   summary.features = run.num_features;
   summary.solved_points = run.solved_points;

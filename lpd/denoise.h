@@ -86,6 +86,7 @@ struct Summary {
   int64_t far = 0;            // of those, far from the whole cloud (stray points)
   int64_t duplicates = 0;     // input points that repeat an earlier one (solved as it)
   int64_t near_repeats = 0;   // points within a tenth of a spacing of an earlier one (same)
+  int64_t separated = 0;      // output points moved to their side of a merged thin part
   int64_t removed = 0;        // not in the output
   int64_t features = 0;       // of the input points
   int64_t solved_points = 0;  // in the last pass's problem (less when subsampled)

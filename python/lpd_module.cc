@@ -90,6 +90,7 @@ py::dict SummaryDict(const lpd::Summary& s) {
   d["far"] = s.far;
   d["duplicates"] = s.duplicates;
   d["near_repeats"] = s.near_repeats;
+  d["separated"] = s.separated;
   d["removed"] = s.removed;
   d["features"] = s.features;
   d["solved_points"] = s.solved_points;

@@ -13,6 +13,7 @@
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
 #include "solvers/near_repeats.h"
+#include "solvers/merged_sides.h"
 #include "solvers/offset_feedback.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
@@ -257,6 +258,25 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       result.projected[i] = problem.frame.ToInput(fed_back[i]);
     }
   }
+  // Merged sides of a thin part, told apart (merged_sides.h): the solved points, and below
+  // the points of a subsample run's extension, each over their own regions.
+  const bool separate_sides =
+      options.final_step.separate_merged_sides && SidesMayHaveMerged(estimates);
+  if (separate_sides) {
+    energy::PointList outputs(result.projected.size());
+    std::vector<uint8_t> kept(outputs.size());
+    for (size_t i = 0; i < outputs.size(); ++i) {
+      outputs[i] = problem.frame.ToNormalized(result.projected[i]);
+      kept[i] = !result.indicators.is_outlier[i];
+    }
+    int moved = 0;
+    outputs = SeparateMergedSides(problem.points, outputs, result.normals, kept,
+                                  options.settings.num_threads, &moved);
+    for (size_t i = 0; i < outputs.size(); ++i) {
+      result.projected[i] = problem.frame.ToInput(outputs[i]);
+    }
+    result.num_separated = moved;
+  }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
                                         options.final_step.snapping, &result.projected);
@@ -279,6 +299,22 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       for (size_t q = 0; q < points.size(); ++q) {
         extended_points[q] = problem.frame.ToInput(points[q]);
       }
+    }
+    if (separate_sides) {
+      energy::PointList inputs(extended_points.size()), outputs(extended_points.size());
+      std::vector<uint8_t> kept(outputs.size());
+      for (size_t q = 0; q < outputs.size(); ++q) {
+        inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
+        outputs[q] = problem.frame.ToNormalized(extended_points[q]);
+        kept[q] = !extended.is_outlier[q];
+      }
+      int moved = 0;
+      outputs = SeparateMergedSides(inputs, outputs, extended_normals, kept,
+                                    options.settings.num_threads, &moved);
+      for (size_t q = 0; q < outputs.size(); ++q) {
+        extended_points[q] = problem.frame.ToInput(outputs[q]);
+      }
+      result.num_separated += moved;
     }
   }
   const std::vector<int>& left_out = state.left_out;
@@ -359,6 +395,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     result.num_removed += next.num_removed;
     result.summary = next.summary;
     result.snapping = next.snapping;
+    result.num_separated = next.num_separated;
     result.removal_note = next.removal_note;
     result.passes = pass;
     result.neighborhood = next.neighborhood;

@@ -94,6 +94,7 @@ struct DenoiseResult {
   int num_far = 0;                   // of those, far from the whole cloud (far_points.h)
   int num_duplicates = 0;            // input points that repeat an earlier one (merged)
   int num_near_repeats = 0;          // input points within a tenth of a spacing of one (merged)
+  int num_separated = 0;             // output points moved to their side (merged_sides.h)
   int num_features = 0;
   SnappingCounts snapping;           // with final_step.snap_features
   int passes = 1;                    // denoising passes run (RerunWithoutOutliers)
