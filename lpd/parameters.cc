@@ -421,7 +421,7 @@ std::vector<Parameter> FinalStepParameters() {
       Flag("separate_sides", kBoth,
            {kFinal,
             "where the input points' offsets from the output read as two sides of a thin part "
-            "merged into one (kurtosis under 2.8 over 1,500 points), move each output point "
+            "merged into one (kurtosis under 2.75 over 1,500 points), move each output point "
             "to its expected side; only where the probe reads sigma at least 1 spacing and "
             "9% or more of its regions nearly split",
             "", "false"},

@@ -14,7 +14,7 @@
 //
 // The moments are taken over regions of kSidesRegionPoints output points; a region counts
 // as merged where its kurtosis is more than kSidesKurtosisStandardErrors standard errors
-// (sqrt(24 / n) for n Gaussian offsets) under 3: 2.80 at 1,500 points. Regions of one sheet
+// (sqrt(24 / n) for n Gaussian offsets) under 3: 2.75 at 1,500 points. Regions of one sheet
 // read 2.80-3.10 at their 1% quantile, merged sides 1.9-2.1 deviations apart 2.55-2.75 at
 // their median (the benchmark's meshes and thin parts at 10K and 50K, docs/method.md). The
 // points the final step flags as outliers count in the moments (at their nearest kept
@@ -31,7 +31,7 @@
 namespace lpd::solvers {
 
 constexpr int kSidesRegionPoints = 1500;
-constexpr double kSidesKurtosisStandardErrors = 1.6;
+constexpr double kSidesKurtosisStandardErrors = 2.0;
 // Regions are measured around every kSidesRegionCentreStride-th point; every point takes the
 // region of its nearest centre.
 constexpr int kSidesRegionCentreStride = 24;
