@@ -24,9 +24,7 @@ bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides
 }
 
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates) {
-  return estimates.spacing > 0.0 &&
-         estimates.noise_sigma >= kSidesMinReadRatio * estimates.spacing &&
-         estimates.thin_candidate_fraction >= kThinShareForNoWidening;
+  return estimates.thin_candidate_fraction >= kThinShareForNoWidening;
 }
 
 energy::PointList SeparateMergedSides(const energy::PointList& inputs,
@@ -90,6 +88,9 @@ energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                           merged[c] = EstimateTwoSides(m2 / found, m4 / found, max_kurtosis,
                                                        &sides[c]);
                         });
+
+  const auto num_merged = std::count(merged.begin(), merged.end(), 1);
+  if (num_merged < kMinMergedRegionShare * num_centres) return result;
 
   // Each anchor moves to its expected side in its nearest centre's region.
   energy::PointList centre_points(num_centres);

@@ -35,10 +35,11 @@ constexpr double kSidesKurtosisStandardErrors = 2.0;
 // Regions are measured around every kSidesRegionCentreStride-th point; every point takes the
 // region of its nearest centre.
 constexpr int kSidesRegionCentreStride = 24;
-// The probe's sigma / spacing from which the test runs. JOINT 0.01 (0.90, 12% of its probe
-// regions nearly split) has 2% of its regions under the bar, on flat parts, and the
-// correction took it from 1.142 to 1.189e-3 (docs/method.md).
-constexpr double kSidesMinReadRatio = 1.0;
+// One sheet's regions fall under the bar by chance in about Phi(-2) = 2.3% of cases; a cloud
+// is taken to have merged sides only where at least twice that share of its regions do.
+// JOINT 0.01 and 0.03 have 2% and 2-3% (on flat parts, away from the edges), and the
+// correction took them from 1.142 to 1.175e-3 and from 5.613 to 5.714e-3 (docs/method.md).
+constexpr double kMinMergedRegionShare = 0.046;
 
 // The kurtosis under which a region of `region_points` offsets counts as two sides.
 double MaxMergedKurtosis(int region_points);
@@ -51,15 +52,16 @@ struct TwoSides {
 };
 bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides);
 
-// Whether a cloud may have merged sides worth the test: the probe read the noise at least
-// kSidesMinReadRatio spacings wide and kThinShareForNoWidening or more of its regions nearly
-// split (the evidence that also keeps k from widening, neighborhood_size.h).
+// Whether a cloud may have merged sides worth the test: kThinShareForNoWidening or more of
+// the probe's regions nearly split (the evidence that also keeps k from widening,
+// neighborhood_size.h).
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates);
 
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
 // movable point of a merged region moved along its normal to a tanh(a z / s^2) (above). Points
 // without movable[i] or a normal stay, but their offsets count. Unchanged when fewer than
-// kSidesRegionPoints points take part. `moved` (optional): how many points moved.
+// kSidesRegionPoints points take part or under kMinMergedRegionShare of the regions read as
+// merged. `moved` (optional): how many points moved.
 // Deterministic for any thread count.
 energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                                       const energy::PointList& outputs,
