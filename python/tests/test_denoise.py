@@ -222,3 +222,18 @@ def test_the_cli_reads_and_writes_pcd_as_open3d_does(tmp_path, lpd_binary):
         nearest = [tree.search_knn_vector_3d(p, 1)[1][0] for p in np.asarray(written.points)]
         agree = np.all(np.round(np.asarray(written.colors) * 255) == colours[nearest], axis=1)
         assert agree.mean() > 0.95
+
+
+def test_two_sheets_merged_by_the_solve_are_told_apart():
+    # Two unit squares 1.9 noise deviations apart: the solve merges them, and the summary
+    # counts the points moved back to their side (solvers/merged_sides.h).
+    rng = np.random.default_rng(5)
+    sigma, half_gap = 0.021, 0.02
+    side = np.where(rng.random(10000) < 0.5, -half_gap, half_gap)
+    points = np.column_stack([rng.random(10000), rng.random(10000), side])
+    points += rng.normal(0.0, sigma, points.shape)
+    told_apart = lpd.denoise(points, threads=2)
+    merged = lpd.denoise(points, threads=2, separate_sides=False)
+    assert told_apart.summary["separated"] > 3000 and merged.summary["separated"] == 0
+    distance = lambda p: np.mean(np.abs(np.abs(p[:, 2]) - half_gap))
+    assert distance(told_apart.points) < distance(points) < distance(merged.points)
