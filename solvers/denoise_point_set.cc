@@ -12,8 +12,8 @@
 #include "solvers/duplicate_points.h"
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
-#include "solvers/near_repeats.h"
 #include "solvers/merged_sides.h"
+#include "solvers/near_repeats.h"
 #include "solvers/offset_feedback.h"
 #include "solvers/parse_by_name.h"
 #include "solvers/residual_statistics.h"
@@ -82,6 +82,26 @@ void SplitOffUnsolved(const std::vector<int>& solved, const energy::PointList& o
     }
   }
   state->order = std::move(solved_order);
+}
+
+// SeparateMergedSides on `outputs` (input frame, moved in place) of `inputs` (normalized
+// frame), the flagged outliers standing; returns how many points moved.
+int SeparateSides(const energy::Frame& frame, const energy::PointList& inputs,
+                  const energy::PointList& normals, const std::vector<uint8_t>& is_outlier,
+                  int num_threads, energy::PointList* outputs) {
+  energy::PointList normalized(outputs->size());
+  std::vector<uint8_t> movable(outputs->size());
+  for (size_t i = 0; i < normalized.size(); ++i) {
+    normalized[i] = frame.ToNormalized((*outputs)[i]);
+    movable[i] = !is_outlier[i];
+  }
+  int moved = 0;
+  const energy::PointList separated =
+      SeparateMergedSides(inputs, normalized, normals, movable, num_threads, &moved);
+  for (size_t i = 0; i < separated.size(); ++i) {
+    if (separated[i] != normalized[i]) (*outputs)[i] = frame.ToInput(separated[i]);
+  }
+  return moved;
 }
 
 }  // namespace
@@ -263,19 +283,9 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   const bool separate_sides =
       options.final_step.separate_merged_sides && SidesMayHaveMerged(estimates);
   if (separate_sides) {
-    energy::PointList outputs(result.projected.size());
-    std::vector<uint8_t> kept(outputs.size());
-    for (size_t i = 0; i < outputs.size(); ++i) {
-      outputs[i] = problem.frame.ToNormalized(result.projected[i]);
-      kept[i] = !result.indicators.is_outlier[i];
-    }
-    int moved = 0;
-    outputs = SeparateMergedSides(problem.points, outputs, result.normals, kept,
-                                  options.settings.num_threads, &moved);
-    for (size_t i = 0; i < outputs.size(); ++i) {
-      result.projected[i] = problem.frame.ToInput(outputs[i]);
-    }
-    result.num_separated = moved;
+    result.num_separated =
+        SeparateSides(problem.frame, problem.points, result.normals, result.indicators.is_outlier,
+                      options.settings.num_threads, &result.projected);
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
@@ -301,20 +311,13 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       }
     }
     if (separate_sides) {
-      energy::PointList inputs(extended_points.size()), outputs(extended_points.size());
-      std::vector<uint8_t> kept(outputs.size());
-      for (size_t q = 0; q < outputs.size(); ++q) {
+      energy::PointList inputs(state.left_out_points.size());
+      for (size_t q = 0; q < inputs.size(); ++q) {
         inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
-        outputs[q] = problem.frame.ToNormalized(extended_points[q]);
-        kept[q] = !extended.is_outlier[q];
       }
-      int moved = 0;
-      outputs = SeparateMergedSides(inputs, outputs, extended_normals, kept,
-                                    options.settings.num_threads, &moved);
-      for (size_t q = 0; q < outputs.size(); ++q) {
-        extended_points[q] = problem.frame.ToInput(outputs[q]);
-      }
-      result.num_separated += moved;
+      result.num_separated += SeparateSides(problem.frame, inputs, extended_normals,
+                                            extended.is_outlier, options.settings.num_threads,
+                                            &extended_points);
     }
   }
   const std::vector<int>& left_out = state.left_out;
