@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "energy/nearest_neighbors.h"
+#include "energy/sheet_split.h"
 
 namespace lpd::solvers {
 
@@ -13,6 +14,7 @@ double MaxMergedKurtosis(int region_points) {
 
 bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides) {
   if (!(m2 > 0.0) || !(m4 < max_kurtosis * m2 * m2)) return false;
+  if (!(m4 > energy::kMinTwoSidesKurtosis * m2 * m2)) return false;
   const double excess = 3.0 * m2 * m2 - m4;  // 2 a^4
   if (!(excess > 0.0)) return false;
   const double half_gap = std::pow(0.5 * excess, 0.25);

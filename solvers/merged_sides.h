@@ -48,7 +48,10 @@ constexpr double kMinMergedRegionShare = 0.1;
 double MaxMergedKurtosis(int region_points);
 
 // Two sides +-half_gap with noise variance sigma_squared, from the moments about 0 above;
-// false where m4 / m2^2 is not under max_kurtosis or the fit leaves no noise.
+// false where m4 / m2^2 is not under max_kurtosis or the fit leaves no noise, and where it
+// is not over energy::kMinTwoSidesKurtosis (2.2): flat-topped noise (1.8 for uniform noise,
+// which the split's within-run test also keeps apart, sheet_split.h) or sides more than
+// about 2.8 deviations apart, which the split itself separates.
 struct TwoSides {
   double half_gap = 0.0;
   double sigma_squared = 0.0;

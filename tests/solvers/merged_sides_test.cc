@@ -1,5 +1,5 @@
 // The merged sides of a thin part against closed forms: the two sides' gap and noise recovered
-// from a two-Gaussian mixture's moments; points over sides two noise deviations apart moved to
+// from a two-Gaussian mixture's moments, flat-topped noise and well-apart sides not taken; points over sides two noise deviations apart moved to
 // their expected side come out closer to their side than the input and the mid-plane; one
 // Gaussian sheet does not move, also with its farthest points flagged as outliers.
 #include "solvers/merged_sides.h"
@@ -14,7 +14,7 @@ namespace lpd::solvers {
 namespace {
 
 TEST(EstimateTwoSides, RecoversTheGapAndNoiseOfATwoGaussianMixture) {
-  for (const auto& [a, s] : {std::pair{1.0, 1.0}, {0.8, 1.1}, {0.03, 0.02}}) {
+  for (const auto& [a, s] : {std::pair{1.0, 1.0}, {0.8, 1.1}, {0.02, 0.02}, {1.3, 1.0}}) {
     const double m2 = a * a + s * s;
     const double m4 = a * a * a * a + 6.0 * a * a * s * s + 3.0 * s * s * s * s;
     TwoSides sides;
@@ -31,6 +31,12 @@ TEST(EstimateTwoSides, OneGaussianSheetOrAKurtosisOverTheBarIsNotTwoSides) {
   EXPECT_FALSE(EstimateTwoSides(0.0, 0.0, 2.8, &sides));   // no spread
   // Two sides 2 deviations apart have kurtosis 3 - 2 / 4 = 2.5.
   EXPECT_TRUE(EstimateTwoSides(2.0, 10.0, 2.8, &sides));
+  // Uniform noise (kurtosis 1.8) and sides 3 deviations apart (3 - 2 * 1.5^4 / 3.25^2 =
+  // 2.04), which the sheet split separates, are not merged sides.
+  EXPECT_FALSE(EstimateTwoSides(1.0, 1.8, 2.8, &sides));
+  const double a = 1.5, s = 1.0, m2 = a * a + s * s;
+  EXPECT_FALSE(EstimateTwoSides(m2, a * a * a * a + 6.0 * a * a * s * s + 3.0 * s * s * s * s,
+                                2.8, &sides));
 }
 
 TEST(MaxMergedKurtosis, IsTwoStandardErrorsUnder3) {
