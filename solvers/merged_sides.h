@@ -9,8 +9,8 @@
 //   m2 = a^2 + s^2,   m4 = a^4 + 6 a^2 s^2 + 3 s^4,   so   m4 - 3 m2^2 = -2 a^4
 // (kurtosis m4 / m2^2 = 3 - 2 a^4 / m2^2: 2.5 for sides 2 s apart, 3 for one sheet). Given
 // its offset z, a point's expected position is a tanh(a z / s^2) along n (the posterior mean
-// of the side), which on sides 2 s apart is 0.32 s from them on average, against 0.65 s for
-// the input and s for the mid-surface (docs/method.md, "Thin parts").
+// of the side), which on sides 2 s apart is about 0.4 s from its side on average, against
+// 0.8 s for the input and s for the mid-surface (docs/method.md, "Thin parts").
 //
 // The moments are taken over regions of kSidesRegionPoints output points; a region counts
 // as merged where its kurtosis is more than kSidesKurtosisStandardErrors standard errors
@@ -35,10 +35,10 @@ constexpr double kSidesKurtosisStandardErrors = 2.0;
 // Regions are measured around every kSidesRegionCentreStride-th point; every point takes the
 // region of its nearest centre.
 constexpr int kSidesRegionCentreStride = 24;
-// One sheet's regions fall under the bar by chance in about Phi(-2) = 2.3% of cases, and
-// a split thin part's in a few percent: a cloud is taken to have merged
-// sides only where a tenth of its regions read so, as a thin region grows only where a tenth
-// of the points are split (energy/sheet_split.h). JOINT 0.01 and 0.03 have 2% and 2-3% (on
+// One sheet's regions fall under the bar by chance in about Phi(-2) = 2.3% of cases, and a
+// split thin part's in a few percent: a cloud is taken to have merged sides only where a
+// tenth of its regions read so, as a thin region grows only where a tenth of the points are
+// split (energy/sheet_split.h). JOINT 0.01 and 0.03 have 2% and 2-3% (on
 // flat parts, away from the edges), and the correction took them from 1.142 to 1.175e-3 and
 // from 5.613 to 5.714e-3. A plate split already can reach it (plate_t0.06 10K 2%, 4.2
 // deviations thick: 2.74 -> 2.85 CD x 1e4, input 7.34; docs/method.md).
