@@ -34,7 +34,7 @@ constexpr int kSidesRegionPoints = 1500;
 constexpr double kSidesKurtosisStandardErrors = 2.0;
 // Regions are measured around every kSidesRegionCentreStride-th point; every point takes the
 // region of its nearest centre.
-constexpr int kSidesRegionCentreStride = 24;
+constexpr int kSidesRegionCentreStride = 96;
 // One sheet's regions fall under the bar by chance in about Phi(-2) = 2.3% of cases, and a
 // split thin part's in a few percent: a cloud is taken to have merged sides only where a
 // tenth of its regions read so, as a thin region grows only where a tenth of the points are
