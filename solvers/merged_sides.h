@@ -41,7 +41,7 @@ constexpr int kSidesRegionCentreStride = 96;
 // split (energy/sheet_split.h). JOINT 0.01 and 0.03 have 2% and 2-3% (on
 // flat parts, away from the edges), and the correction took them from 1.142 to 1.175e-3 and
 // from 5.613 to 5.714e-3. A plate split already can reach it (plate_t0.06 10K 2%, 4.2
-// deviations thick: 2.74 -> 2.85 CD x 1e4, input 7.34; docs/method.md).
+// deviations thick: 2.74 -> 2.83 CD x 1e4, input 7.34; docs/method.md).
 constexpr double kMinMergedRegionShare = 0.1;
 
 // The kurtosis under which a region of `region_points` offsets counts as two sides.
