@@ -275,13 +275,20 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
       result.total_seconds, result.setup_seconds);
   std::string chosen;
   if (result.neighborhood.spacing > 0.0) {
-    char text[200];
+    const solvers::NeighborhoodSize& size = result.neighborhood;
+    char text[300];
     std::snprintf(text, sizeof(text),
                   " (from noise %.3g and spacing %.3g of the diagonal: radius %.3g noise "
                   "deviations)",
-                  result.neighborhood.noise_sigma, result.neighborhood.spacing,
-                  result.neighborhood.radius_in_sigmas);
+                  size.read_sigma, size.spacing, size.radius_in_sigmas);
     chosen = text;
+    if (size.noise_sigma != size.read_sigma) {
+      std::snprintf(text, sizeof(text),
+                    " (from the spread %.3g of merged sides of a thin part, noise %.3g each, and "
+                    "spacing %.3g of the diagonal: radius %.3g spreads)",
+                    size.read_sigma, size.noise_sigma, size.spacing, size.radius_in_sigmas);
+      chosen = text;
+    }
   }
   if (result.subsampled) {
     chosen += " on a subsample of " + std::to_string(result.solved_points) + " points";

@@ -30,6 +30,7 @@ std::vector<std::pair<std::string, std::string>> Derived(const solvers::DenoiseO
                                                          const solvers::DenoiseResult& result) {
   return {{"k", Integer(result.neighborhood.k)},
           {"noise_sigma", JsonNumber(result.neighborhood.noise_sigma)},
+          {"read_sigma", JsonNumber(result.neighborhood.read_sigma)},
           {"spacing", JsonNumber(result.neighborhood.spacing)},
           {"k_radius_sigmas", JsonNumber(result.neighborhood.radius_in_sigmas)},
           {"two_sheet_fraction", JsonNumber(result.neighborhood.two_sheet_fraction)},

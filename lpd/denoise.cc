@@ -32,6 +32,7 @@ Summary MakeSummary(const solvers::DenoiseResult& run, const solvers::DenoiseOpt
   summary.passes = run.passes;
   summary.k = run.neighborhood.k;
   summary.noise_sigma = run.neighborhood.noise_sigma;
+  summary.read_sigma = run.neighborhood.read_sigma;
   summary.spacing = run.neighborhood.spacing;
   summary.eta = run.summary.eta;
   summary.lambda = run.summary.lambda;

@@ -422,8 +422,8 @@ std::vector<Parameter> FinalStepParameters() {
            {kFinal,
             "where the input points' offsets from the output read as two sides of a thin part "
             "merged into one (kurtosis under 2.75 over 1,500 points), move each output point "
-            "to its expected side; only where 9% or more of the probe's regions nearly split "
-            "and a tenth or more of these regions read as merged",
+            "to the side its offset's sign picks; only where 9% or more of the probe's regions "
+            "nearly split and a tenth or more of these regions read as merged",
             "", "false"},
            [](O& o) -> bool& { return o.final_step.separate_merged_sides; }),
       Number("outlier_fraction", kBoth,

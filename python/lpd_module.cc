@@ -78,6 +78,7 @@ py::dict SummaryDict(const lpd::Summary& s) {
   d["passes"] = s.passes;
   d["k"] = s.k;
   d["noise_sigma"] = s.noise_sigma;
+  d["read_sigma"] = s.read_sigma;
   d["spacing"] = s.spacing;
   d["eta"] = s.eta;
   d["lambda"] = s.lambda;

@@ -165,7 +165,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
     problem_options.k = state.neighborhood.k;
     // Thin regions grow wherever found where the noise is as wide as the spacing
     // (energy/sheet_split.h).
-    if (state.neighborhood.noise_sigma >= state.neighborhood.spacing) {
+    if (state.neighborhood.read_sigma >= state.neighborhood.spacing) {
       problem_options.thin_region_growth = energy::ThinRegionGrowth::kEverywhere;
     }
     if (!thinning.rows.empty()) SplitOffUnsolved(thinning.rows, ordered_points, &state,
@@ -268,7 +268,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   }
   const NeighborhoodSize& estimates = state.neighborhood;
   const bool feed_back = options.final_step.offset_feedback && estimates.spacing > 0.0 &&
-                         estimates.noise_sigma <= kCalibratedReadRatio * estimates.spacing;
+                         estimates.read_sigma <= kCalibratedReadRatio * estimates.spacing;
   energy::PointList fed_back;
   if (feed_back) {
     normalize_output();

@@ -5,6 +5,7 @@
 
 #include "energy/nearest_neighbors.h"
 #include "energy/sheet_split.h"
+#include "solvers/median.h"
 
 namespace lpd::solvers {
 
@@ -27,6 +28,58 @@ bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides
 
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates) {
   return estimates.thin_candidate_fraction >= kThinShareForNoWidening;
+}
+
+bool SideRegions::MergedEnough() const {
+  const auto num_merged = std::count(merged.begin(), merged.end(), 1);
+  return !merged.empty() && num_merged >= kMinMergedRegionShare * merged.size();
+}
+
+std::vector<int> SideRegions::MergedRegionOf(const energy::PointList& points,
+                                             int num_threads) const {
+  std::vector<int> region_of(points.size(), -1);
+  if (centres.empty()) return region_of;
+  const energy::NearestNeighbors centre_search(centres);
+  centre_search.ForEach(static_cast<int>(points.size()), 1, num_threads,
+                        [&](int r) { return points[r]; },
+                        [&](int r, const int* nearest, const double*, int) {
+                          if (merged[nearest[0]]) region_of[r] = nearest[0];
+                        });
+  return region_of;
+}
+
+SideRegions MeasureSideRegions(const energy::PointList& positions,
+                               const std::vector<double>& offsets, const std::vector<int>& pool,
+                               int num_threads) {
+  SideRegions regions;
+  if (static_cast<int>(positions.size()) < kSidesRegionPoints) return regions;
+  std::vector<int> centres;
+  for (size_t r = 0; r < pool.size(); r += kSidesRegionCentreStride) centres.push_back(pool[r]);
+  const int num_centres = static_cast<int>(centres.size());
+  regions.centres.resize(num_centres);
+  for (int c = 0; c < num_centres; ++c) regions.centres[c] = positions[centres[c]];
+  regions.sides.resize(num_centres);
+  regions.merged.assign(num_centres, 0);
+  regions.median_abs_offset.resize(num_centres);
+  const double max_kurtosis = MaxMergedKurtosis(kSidesRegionPoints);
+  const energy::NearestNeighbors region_search(positions);
+  region_search.ForEach(
+      num_centres, kSidesRegionPoints, num_threads,
+      [&](int c) { return regions.centres[c]; },
+      [&](int c, const int* nearest, const double*, int found) {
+        double m2 = 0.0, m4 = 0.0;
+        std::vector<double> magnitudes(found);
+        for (int j = 0; j < found; ++j) {
+          const double z = offsets[nearest[j]];
+          m2 += z * z;
+          m4 += z * z * z * z;
+          magnitudes[j] = std::abs(z);
+        }
+        regions.merged[c] =
+            EstimateTwoSides(m2 / found, m4 / found, max_kurtosis, &regions.sides[c]);
+        regions.median_abs_offset[c] = Median(&magnitudes);
+      });
+  return regions;
 }
 
 energy::PointList SeparateMergedSides(const energy::PointList& inputs,
@@ -68,50 +121,19 @@ energy::PointList SeparateMergedSides(const energy::PointList& inputs,
     offset[i] = normals[a].dot(inputs[i] - outputs[a]);
   }
 
-  // The regions' moments about 0, around every kSidesRegionCentreStride-th anchor.
-  std::vector<int> centres;
-  for (size_t r = 0; r < anchors.size(); r += kSidesRegionCentreStride) {
-    centres.push_back(anchors[r]);
+  const SideRegions regions = MeasureSideRegions(positions, offset, anchors, num_threads);
+  if (!regions.MergedEnough()) return result;
+  const std::vector<int> region_of = regions.MergedRegionOf(anchor_points, num_threads);
+  // Each anchor of a merged region moves to the side its offset's sign picks.
+  int count = 0;
+  for (size_t r = 0; r < anchors.size(); ++r) {
+    if (region_of[r] < 0) continue;
+    const int i = anchors[r];
+    const double half_gap = regions.sides[region_of[r]].half_gap;
+    result[i] = outputs[i] + (offset[i] >= 0.0 ? half_gap : -half_gap) * normals[i];
+    ++count;
   }
-  const int num_centres = static_cast<int>(centres.size());
-  std::vector<TwoSides> sides(num_centres);
-  std::vector<uint8_t> merged(num_centres, 0);
-  const double max_kurtosis = MaxMergedKurtosis(kSidesRegionPoints);
-  const energy::NearestNeighbors region_search(positions);
-  region_search.ForEach(num_centres, kSidesRegionPoints, num_threads,
-                        [&](int c) { return positions[centres[c]]; },
-                        [&](int c, const int* nearest, const double*, int found) {
-                          double m2 = 0.0, m4 = 0.0;
-                          for (int j = 0; j < found; ++j) {
-                            const double z2 = offset[nearest[j]] * offset[nearest[j]];
-                            m2 += z2;
-                            m4 += z2 * z2;
-                          }
-                          merged[c] = EstimateTwoSides(m2 / found, m4 / found, max_kurtosis,
-                                                       &sides[c]);
-                        });
-
-  const auto num_merged = std::count(merged.begin(), merged.end(), 1);
-  if (num_merged < kMinMergedRegionShare * num_centres) return result;
-
-  // Each anchor moves to its expected side in its nearest centre's region.
-  energy::PointList centre_points(num_centres);
-  for (int c = 0; c < num_centres; ++c) centre_points[c] = positions[centres[c]];
-  std::vector<uint8_t> shifted(anchors.size(), 0);
-  const energy::NearestNeighbors centre_search(centre_points);
-  centre_search.ForEach(
-      static_cast<int>(anchors.size()), 1, num_threads,
-      [&](int r) { return outputs[anchors[r]]; },
-      [&](int r, const int* nearest, const double*, int) {
-        const int c = nearest[0];
-        if (!merged[c]) return;
-        const int i = anchors[r];
-        const TwoSides& s = sides[c];
-        const double side = s.half_gap * std::tanh(s.half_gap * offset[i] / s.sigma_squared);
-        result[i] = outputs[i] + side * normals[i];
-        shifted[r] = 1;
-      });
-  if (moved) *moved = static_cast<int>(std::count(shifted.begin(), shifted.end(), 1));
+  if (moved) *moved = count;
   return result;
 }
 

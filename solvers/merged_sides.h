@@ -7,10 +7,13 @@
 // from. Around a merged output the offsets z = n.(p - o) of the input points are a mixture
 // of two Gaussians at +a and -a with the noise's deviation s, whose moments about 0 are
 //   m2 = a^2 + s^2,   m4 = a^4 + 6 a^2 s^2 + 3 s^4,   so   m4 - 3 m2^2 = -2 a^4
-// (kurtosis m4 / m2^2 = 3 - 2 a^4 / m2^2: 2.5 for sides 2 s apart, 3 for one sheet). Given
-// its offset z, a point's expected position is a tanh(a z / s^2) along n (the posterior mean
-// of the side), which on sides 2 s apart is about 0.4 s from its side on average, against
-// 0.8 s for the input and s for the mid-surface (docs/method.md, "Thin parts").
+// (kurtosis m4 / m2^2 = 3 - 2 a^4 / m2^2: 2.5 for sides 2 s apart, 3 for one sheet). Each
+// point moves to the side the sign of its offset picks, +-a along n: on the wrong side with
+// probability Phi(-a / s) (16% for sides 2 s apart), but on a side either way, and 2 a
+// Phi(-a / s) = 0.32 s from its own side on average. The posterior mean a tanh(a z / s^2)
+// has the smaller squared error (RMS 0.67 s against 0.79 s) but is 0.45 s from its own side
+// on average and leaves a slab of points between the sides, 0.32 s from the nearer one
+// (simulated; docs/method.md, "Thin parts").
 //
 // The moments are taken over regions of kSidesRegionPoints output points; a region counts
 // as merged where its kurtosis is more than kSidesKurtosisStandardErrors standard errors
@@ -58,13 +61,35 @@ struct TwoSides {
 };
 bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides);
 
+// The regions of kSidesRegionPoints points around every kSidesRegionCentreStride-th point of
+// a pool, each with its offsets' moments about 0 read as two sides or not.
+struct SideRegions {
+  energy::PointList centres;
+  std::vector<TwoSides> sides;           // where merged
+  std::vector<uint8_t> merged;
+  std::vector<double> median_abs_offset;  // of the region's offsets
+
+  // Whether kMinMergedRegionShare or more of the regions read as merged.
+  bool MergedEnough() const;
+  // For each of `points`, the region of its nearest centre where that region is merged, else
+  // -1.
+  std::vector<int> MergedRegionOf(const energy::PointList& points, int num_threads) const;
+};
+
+// `offsets[i]` is point i's offset from the surface at `positions[i]`; the regions are
+// centred on every kSidesRegionCentreStride-th point of `pool` (indices into positions).
+// Empty where fewer than kSidesRegionPoints positions are given.
+SideRegions MeasureSideRegions(const energy::PointList& positions,
+                               const std::vector<double>& offsets, const std::vector<int>& pool,
+                               int num_threads);
+
 // Whether a cloud may have merged sides worth the test: kThinShareForNoWidening or more of
 // the probe's regions nearly split (the evidence that also keeps k from widening,
 // neighborhood_size.h).
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates);
 
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
-// movable point of a merged region moved along its normal to a tanh(a z / s^2) (above). Points
+// movable point of a merged region moved along its normal to sign(z) a (above). Points
 // without movable[i] or a normal stay, but their offsets count. Unchanged when fewer than
 // kSidesRegionPoints points take part or under kMinMergedRegionShare of the regions read as
 // merged. `moved` (optional): how many points moved.

@@ -82,8 +82,13 @@ constexpr double kThinShareForNoWidening = 0.09;
 double WideNoiseFactor(double read_ratio, double thin_candidate_fraction);
 
 struct NeighborhoodSize {
-  double noise_sigma = 0.0;  // in the normalized frame (bounding-box diagonal 1)
-  double spacing = 0.0;      // likewise
+  // The noise's deviation: of each side where the probe finds the merged sides of a thin
+  // part (merged_sides.h), else read_sigma. In the normalized frame (bounding-box diagonal 1).
+  double noise_sigma = 0.0;
+  // The probe's reading, which k and the rules on sigma / spacing are calibrated on: on
+  // merged sides their spread, one sheet with wider noise, as the solve sees them.
+  double read_sigma = 0.0;
+  double spacing = 0.0;  // likewise
   double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
