@@ -31,7 +31,10 @@
 // kThinRegionGrowthSeparation, sheet_split.h: 1-6% of the probes on the benchmark's meshes
 // at 50,000 points, 6-14% on plates, sheets, thin cylinders and thin-walled boxes whose sides
 // are 1.4-2.8 deviations apart), so the widening fades out between those shares
-// (docs/method.md, "Noise near the spacing").
+// (docs/method.md, "Noise near the spacing"). Sides too close to split read as that one
+// sheet: there k keeps the spread the probe reads (read_sigma) and noise_sigma is each
+// side's noise, from the offsets' moments over regions of 1,500 probed points
+// (merged_sides.h; docs/method.md, "Thin parts").
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 #define LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 
