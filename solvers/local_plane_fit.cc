@@ -10,9 +10,14 @@ void LocalPlaneSystem(const energy::Problem& problem, const energy::EnergyParame
   Eigen::Matrix4d scatter = Eigen::Matrix4d::Zero();
   for (int col = 0; col <= problem.k(); ++col) {
     const int j = problem.graph.FittingPoint(i, col);
-    Eigen::Vector4d q;
-    q << problem.points[j], 1.0;
-    scatter.selfadjointView<Eigen::Lower>().rankUpdate(q, v.l(i, col));
+    const energy::Point3& p = problem.points[j];
+    const double q[4] = {p.x(), p.y(), p.z(), 1.0};
+    // The lower triangle of l_ic q q^T, entry by entry as Eigen's rank update adds it (the same
+    // sums), without its general-size loop (7.6% of a 50K run at k = 121).
+    for (int c = 0; c < 4; ++c) {
+      const double weighted = v.l(i, col) * q[c];
+      for (int r = c; r < 4; ++r) scatter(r, c) += weighted * q[r];
+    }
   }
   scatter.triangularView<Eigen::StrictlyUpper>() = scatter.transpose();
   const double alpha = problem.alpha[i];
