@@ -2,7 +2,8 @@
 // recovered from a two-Gaussian mixture's moments, flat-topped noise and well-apart sides not
 // taken; points over sides two noise deviations apart, moved to the side their offset's sign
 // picks, come out on a side and closer to their own than the input and the mid-plane; one
-// Gaussian sheet does not move, also with its farthest points flagged as outliers.
+// Gaussian sheet does not move, also with its farthest points flagged as outliers; the
+// regions' moments and medians against brute-force nearest points.
 #include "solvers/merged_sides.h"
 
 #include <algorithm>
@@ -131,6 +132,51 @@ TEST(SeparateMergedSides, OneGaussianSheetStaysAlsoWithItsFarthestPointsFlagged)
     for (size_t i = 0; i < height.size(); ++i) movable[i] = height[i] < cut;
     ExpectOneSheetStays(m, movable);
   }
+}
+
+TEST(MeasureSideRegions, EachRegionIsItsCentresNearestPointsByBruteForce) {
+  // Scattered positions (no ties in distance), offsets of sides 2 sigma apart.
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Merged m = MergedSheet(0.002, 0.002, 5);
+  energy::PointList positions;
+  std::vector<double> offsets;
+  std::vector<int> pool;
+  for (size_t i = 0; i < m.inputs.size(); ++i) {
+    positions.emplace_back(unit(random), unit(random), 0.0);
+    offsets.push_back(m.inputs[i].z());
+    pool.push_back(static_cast<int>(i));
+  }
+  const SideRegions regions = MeasureSideRegions(positions, offsets, pool, 2);
+  ASSERT_EQ(regions.centres.size(), (pool.size() + kSidesRegionCentreStride - 1) /
+                                        kSidesRegionCentreStride);
+  for (size_t c = 0; c < regions.centres.size(); c += 7) {
+    const energy::Point3 centre = positions[pool[c * kSidesRegionCentreStride]];
+    EXPECT_EQ(regions.centres[c], centre);
+    std::vector<std::pair<double, int>> by_distance;
+    for (size_t i = 0; i < positions.size(); ++i) {
+      by_distance.emplace_back((positions[i] - centre).squaredNorm(), static_cast<int>(i));
+    }
+    std::sort(by_distance.begin(), by_distance.end());
+    double m2 = 0.0, m4 = 0.0;
+    std::vector<double> magnitudes;
+    for (int j = 0; j < kSidesRegionPoints; ++j) {
+      const double z = offsets[by_distance[j].second];
+      m2 += z * z / kSidesRegionPoints;
+      m4 += z * z * z * z / kSidesRegionPoints;
+      magnitudes.push_back(std::abs(z));
+    }
+    std::sort(magnitudes.begin(), magnitudes.end());
+    EXPECT_EQ(regions.median_abs_offset[c], magnitudes[kSidesRegionPoints / 2]);
+    TwoSides expected;
+    const bool merged =
+        EstimateTwoSides(m2, m4, MaxMergedKurtosis(kSidesRegionPoints), &expected);
+    ASSERT_EQ(regions.merged[c] != 0, merged) << "region " << c;
+    if (merged) {
+      EXPECT_NEAR(regions.sides[c].half_gap, expected.half_gap, 1e-12);
+    }
+  }
+  EXPECT_TRUE(regions.MergedEnough());
 }
 
 TEST(SeparateMergedSides, FewerPointsThanARegionStay) {
