@@ -13,6 +13,10 @@ double MaxMergedKurtosis(int region_points) {
   return 3.0 - kSidesKurtosisStandardErrors * std::sqrt(24.0 / region_points);
 }
 
+double MaxGrowthKurtosis(int region_points) {
+  return 3.0 - kSidesGrowthStandardErrors * std::sqrt(24.0 / region_points);
+}
+
 bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides) {
   if (!(m2 > 0.0) || !(m4 < max_kurtosis * m2 * m2)) return false;
   if (!(m4 > energy::kMinTwoSidesKurtosis * m2 * m2)) return false;
@@ -31,8 +35,8 @@ bool SidesMayHaveMerged(const NeighborhoodSize& estimates) {
 }
 
 bool SideRegions::MergedEnough() const {
-  const auto num_merged = std::count(merged.begin(), merged.end(), 1);
-  return !merged.empty() && num_merged >= kMinMergedRegionShare * merged.size();
+  const auto num_seeds = std::count(seed.begin(), seed.end(), 1);
+  return !seed.empty() && num_seeds >= kMinMergedRegionShare * seed.size();
 }
 
 std::vector<int> SideRegions::MergedRegionOf(const energy::PointList& points,
@@ -60,8 +64,11 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
   for (int c = 0; c < num_centres; ++c) regions.centres[c] = positions[centres[c]];
   regions.sides.resize(num_centres);
   regions.merged.assign(num_centres, 0);
+  regions.seed.assign(num_centres, 0);
   regions.median_abs_offset.resize(num_centres);
-  const double max_kurtosis = MaxMergedKurtosis(kSidesRegionPoints);
+  const double seed_kurtosis = MaxMergedKurtosis(kSidesRegionPoints);
+  const double growth_kurtosis = MaxGrowthKurtosis(kSidesRegionPoints);
+  std::vector<uint8_t> may_grow(num_centres, 0);
   const energy::NearestNeighbors region_search(positions);
   region_search.ForEach(
       num_centres, kSidesRegionPoints, num_threads,
@@ -75,10 +82,41 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
           m4 += z * z * z * z;
           magnitudes[j] = std::abs(z);
         }
-        regions.merged[c] =
-            EstimateTwoSides(m2 / found, m4 / found, max_kurtosis, &regions.sides[c]);
+        m2 /= found;
+        m4 /= found;
+        may_grow[c] = EstimateTwoSides(m2, m4, growth_kurtosis, &regions.sides[c]);
+        regions.seed[c] = may_grow[c] && m4 < seed_kurtosis * m2 * m2;
         regions.median_abs_offset[c] = Median(&magnitudes);
       });
+  // Growth from the seeds through neighbouring regions under the growth bar: the regions
+  // connected to a seed through such regions, whatever the order of the centres.
+  const int neighbors = std::min(num_centres, kSidesGrowthNeighbors + 1);
+  std::vector<int> adjacent(static_cast<size_t>(num_centres) * neighbors);
+  const energy::NearestNeighbors centre_search(regions.centres);
+  centre_search.ForEach(num_centres, neighbors, num_threads,
+                        [&](int c) { return regions.centres[c]; },
+                        [&](int c, const int* nearest, const double*, int found) {
+                          std::copy_n(nearest, found,
+                                      adjacent.data() + static_cast<size_t>(c) * neighbors);
+                        });
+  std::vector<int> front;
+  for (int c = 0; c < num_centres; ++c) {
+    if (regions.seed[c]) {
+      regions.merged[c] = 1;
+      front.push_back(c);
+    }
+  }
+  if (front.size() < kMinGrowthSeedShare * num_centres) front.clear();
+  while (!front.empty()) {
+    const int c = front.back();
+    front.pop_back();
+    for (int a = 0; a < neighbors; ++a) {
+      const int d = adjacent[static_cast<size_t>(c) * neighbors + a];
+      if (regions.merged[d] || !may_grow[d]) continue;
+      regions.merged[d] = 1;
+      front.push_back(d);
+    }
+  }
   return regions;
 }
 

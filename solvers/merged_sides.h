@@ -46,9 +46,25 @@ constexpr int kSidesRegionCentreStride = 96;
 // from 5.613 to 5.714e-3. A plate split already can reach it (plate_t0.06 10K 2%, 4.2
 // deviations thick: 2.74 -> 2.83 CD x 1e4, input 7.34; docs/method.md).
 constexpr double kMinMergedRegionShare = 0.1;
+// A thin part is a region, but each region's kurtosis reads with a standard error of 0.13:
+// sides 1.3-2 deviations apart (kurtosis 2.81-2.55) read over the bar in part of their
+// regions (28% of sheets 0.04 apart at 3% noise, 10K points), and which ones turns on the
+// output's last digits (at 100 iterations one region fewer moved: P2M 2.3% higher; on a tube
+// with 1.9-deviation walls 7.8%). So the merged regions grow, as thin regions do
+// (energy/sheet_split.h): a region among the kSidesGrowthNeighbors nearest centres of a
+// merged one is merged too where its kurtosis is kSidesGrowthStandardErrors under 3 (2.87).
+// Neighbouring regions share most of their points, so chance seeds on one sheet grow as well:
+// the growth runs only where kMinGrowthSeedShare of the regions are seeds (45-94% on the
+// merged thin cells; 10.6% on a plate split already, plate_t0.06 10K 2%, where growth to 32%
+// of the regions took CD from 2.97 to 3.42; docs/method.md).
+constexpr int kSidesGrowthNeighbors = 6;
+constexpr double kSidesGrowthStandardErrors = 1.0;
+constexpr double kMinGrowthSeedShare = 0.2;
 
 // The kurtosis under which a region of `region_points` offsets counts as two sides.
 double MaxMergedKurtosis(int region_points);
+// The kurtosis under which a region next to a merged one counts as merged too.
+double MaxGrowthKurtosis(int region_points);
 
 // Two sides +-half_gap with noise variance sigma_squared, from the moments about 0 above;
 // false where m4 / m2^2 is not under max_kurtosis or the fit leaves no noise, and where it
@@ -62,14 +78,16 @@ struct TwoSides {
 bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides);
 
 // The regions of kSidesRegionPoints points around every kSidesRegionCentreStride-th point of
-// a pool, each with its offsets' moments about 0 read as two sides or not.
+// a pool, each with its offsets' moments about 0 read as two sides (a seed) or not, and the
+// regions grown from the seeds.
 struct SideRegions {
   energy::PointList centres;
   std::vector<TwoSides> sides;           // where merged
-  std::vector<uint8_t> merged;
+  std::vector<uint8_t> merged;  // seeds and the regions grown from them
+  std::vector<uint8_t> seed;    // under MaxMergedKurtosis
   std::vector<double> median_abs_offset;  // of the region's offsets
 
-  // Whether kMinMergedRegionShare or more of the regions read as merged.
+  // Whether kMinMergedRegionShare or more of the regions are seeds.
   bool MergedEnough() const;
   // For each of `points`, the region of its nearest centre where that region is merged, else
   // -1.

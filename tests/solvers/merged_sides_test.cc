@@ -3,7 +3,8 @@
 // taken; points over sides two noise deviations apart, moved to the side their offset's sign
 // picks, come out on a side and closer to their own than the input and the mid-plane; one
 // Gaussian sheet does not move, also with its farthest points flagged as outliers; the
-// regions' moments and medians against brute-force nearest points.
+// regions' moments and medians against brute-force nearest points, and their growth from
+// seeds through neighbouring regions between the two bars.
 #include "solvers/merged_sides.h"
 
 #include <algorithm>
@@ -169,14 +170,75 @@ TEST(MeasureSideRegions, EachRegionIsItsCentresNearestPointsByBruteForce) {
     std::sort(magnitudes.begin(), magnitudes.end());
     EXPECT_EQ(regions.median_abs_offset[c], magnitudes[kSidesRegionPoints / 2]);
     TwoSides expected;
-    const bool merged =
-        EstimateTwoSides(m2, m4, MaxMergedKurtosis(kSidesRegionPoints), &expected);
-    ASSERT_EQ(regions.merged[c] != 0, merged) << "region " << c;
-    if (merged) {
+    const bool seed = EstimateTwoSides(m2, m4, MaxMergedKurtosis(kSidesRegionPoints), &expected);
+    ASSERT_EQ(regions.seed[c] != 0, seed) << "region " << c;
+    if (seed) {
       EXPECT_NEAR(regions.sides[c].half_gap, expected.half_gap, 1e-12);
+      EXPECT_TRUE(regions.merged[c]);
     }
   }
   EXPECT_TRUE(regions.MergedEnough());
+}
+
+// Offsets cycling through a pattern of zeros and +-1 by index: a share p of zeros gives
+// kurtosis 1 / (1 - p) over any run of whole periods.
+double PatternOffset(int index, int period, int nonzero) {
+  const int phase = index % period;
+  if (phase >= nonzero) return 0.0;
+  return phase % 2 == 0 ? 1.0 : -1.0;
+}
+
+TEST(MeasureSideRegions, RegionsUnderTheGrowthBarNextToMergedOnesAreMerged) {
+  // A strip of 300 x 20 points in three parts along x: kurtosis 2.5 (a seed's, under
+  // MaxMergedKurtosis = 2.747), 2.8125 (between it and MaxGrowthKurtosis = 2.874) and 3.
+  constexpr int kColumns = 300, kRows = 20;
+  energy::PointList positions;
+  std::vector<double> offsets;
+  std::vector<int> pool;
+  for (int x = 0; x < kColumns; ++x) {
+    for (int y = 0; y < kRows; ++y) {
+      const int index = x * kRows + y;
+      positions.emplace_back(x, y + 0.01 * x, 0.0);  // sheared: no ties in distance
+      const double z = x < 100 ? PatternOffset(index, 5, 2)     // 1 / 0.4
+                       : x < 200 ? PatternOffset(index, 45, 16)  // 1 / (16 / 45)
+                                 : PatternOffset(index, 6, 2);   // 1 / (1 / 3)
+      offsets.push_back(z);
+      pool.push_back(index);
+    }
+  }
+  ASSERT_LT(MaxMergedKurtosis(kSidesRegionPoints), 2.8125 - 0.05);
+  ASSERT_GT(MaxGrowthKurtosis(kSidesRegionPoints), 2.8125 + 0.05);
+  const SideRegions regions = MeasureSideRegions(positions, offsets, pool, 2);
+  // A region spans kSidesRegionPoints / kRows = 75 columns: those within 40 columns of a
+  // centre in the middle of a part see that part only.
+  int middle = 0, right = 0;
+  for (size_t c = 0; c < regions.centres.size(); ++c) {
+    const double x = regions.centres[c].x();
+    if (x > 140 && x < 160) {
+      EXPECT_FALSE(regions.seed[c]) << "x = " << x;
+      EXPECT_TRUE(regions.merged[c]) << "x = " << x;
+      ++middle;
+    }
+    if (x > 240) {
+      EXPECT_FALSE(regions.merged[c]) << "x = " << x;
+      ++right;
+    }
+    if (x < 60) EXPECT_TRUE(regions.seed[c]) << "x = " << x;
+  }
+  EXPECT_GT(middle, 0);
+  EXPECT_GT(right, 0);
+  // With seeds under kMinGrowthSeedShare of the regions (the first 45 columns' kurtosis 2.5:
+  // regions centred in the first 47 columns), nothing grows.
+  for (size_t i = 0; i < offsets.size(); ++i) {
+    if (positions[i].x() >= 45 && positions[i].x() < 100) {
+      offsets[i] = PatternOffset(static_cast<int>(i), 6, 2);
+    }
+  }
+  const SideRegions few_seeds = MeasureSideRegions(positions, offsets, pool, 2);
+  const auto seeds = std::count(few_seeds.seed.begin(), few_seeds.seed.end(), 1);
+  EXPECT_GT(seeds, 0);
+  EXPECT_LT(seeds, kMinGrowthSeedShare * few_seeds.seed.size());
+  EXPECT_EQ(few_seeds.merged, few_seeds.seed);
 }
 
 TEST(SeparateMergedSides, FewerPointsThanARegionStay) {
