@@ -46,17 +46,15 @@ constexpr int kSidesRegionCentreStride = 96;
 // from 5.613 to 5.714e-3. A plate split already can reach it (plate_t0.06 10K 2%, 4.2
 // deviations thick: 2.74 -> 2.83 CD x 1e4, input 7.34; docs/method.md).
 constexpr double kMinMergedRegionShare = 0.1;
-// A thin part is a region, but each region's kurtosis reads with a standard error of 0.13:
-// sides 1.3-2 deviations apart (kurtosis 2.81-2.55) read over the bar in part of their
-// regions (28% of sheets 0.04 apart at 3% noise, 10K points), and which ones turns on the
-// output's last digits (at 100 iterations one region fewer moved: P2M 2.3% higher; on a tube
-// with 1.9-deviation walls 7.8%). So the merged regions grow, as thin regions do
-// (energy/sheet_split.h): a region among the kSidesGrowthNeighbors nearest centres of a
-// merged one is merged too where its kurtosis is kSidesGrowthStandardErrors under 3 (2.87).
-// Neighbouring regions share most of their points, so chance seeds on one sheet grow as well:
-// the growth runs only where kMinGrowthSeedShare of the regions are seeds (45-94% on the
-// merged thin cells; 10.6% on a plate split already, plate_t0.06 10K 2%, where growth to 32%
-// of the regions took CD from 2.97 to 3.42; docs/method.md).
+// A thin part is a region, but each region's kurtosis reads with a standard error of 0.13,
+// so sides 1.3-2 deviations apart (kurtosis 2.81-2.55) read over the bar in part of their
+// regions, and which ones turns on the output's last digits (more iterations moved a region
+// more or less). So the merged regions grow, as thin regions do (energy/sheet_split.h): a
+// region among the kSidesGrowthNeighbors nearest centres of a merged one is merged too where
+// its kurtosis is kSidesGrowthStandardErrors under 3 (2.87). Neighbouring regions share most
+// of their points, so chance seeds on one sheet would grow as well: the growth runs only
+// where kMinGrowthSeedShare of the regions are seeds (docs/method.md, "The merged regions
+// grow").
 constexpr int kSidesGrowthNeighbors = 6;
 constexpr double kSidesGrowthStandardErrors = 1.0;
 constexpr double kMinGrowthSeedShare = 0.2;
