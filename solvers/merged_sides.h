@@ -80,9 +80,9 @@ bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides
 // regions grown from the seeds.
 struct SideRegions {
   energy::PointList centres;
-  std::vector<TwoSides> sides;           // where merged
-  std::vector<uint8_t> merged;  // seeds and the regions grown from them
-  std::vector<uint8_t> seed;    // under MaxMergedKurtosis
+  std::vector<TwoSides> sides;            // set where under MaxGrowthKurtosis
+  std::vector<uint8_t> merged;            // the seeds and the regions grown from them
+  std::vector<uint8_t> seed;              // under MaxMergedKurtosis
   std::vector<double> median_abs_offset;  // of the region's offsets
 
   // Whether kMinMergedRegionShare or more of the regions are seeds.
