@@ -120,34 +120,50 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
                   graph.neighbors.data() + static_cast<size_t>(i) * k);
     }
   }
-  BuildPairs(&graph);
+  BuildPairs(&graph, num_threads);
   return graph;
 }
 
-void BuildPairs(NeighborGraph* graph) {
+void BuildPairs(NeighborGraph* graph, int num_threads) {
   const int n = graph->num_points();
   const int k = graph->k;
-  std::vector<uint64_t> keys;
-  keys.reserve(static_cast<size_t>(n) * k);
+  // The pairs {i, j} in increasing (min, max) order, each once: the larger indices are
+  // bucketed by the smaller one, and each bucket is sorted on its own.
+  std::vector<size_t> bucket_offsets(static_cast<size_t>(n) + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    const int* nbrs = graph->NeighborsOf(i);
+    for (int a = 0; a < k; ++a) ++bucket_offsets[std::min(i, nbrs[a]) + 1];
+  }
+  for (int i = 0; i < n; ++i) bucket_offsets[i + 1] += bucket_offsets[i];
+  std::vector<int> larger(bucket_offsets[n]);
+  std::vector<size_t> bucket_fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
   for (int i = 0; i < n; ++i) {
     const int* nbrs = graph->NeighborsOf(i);
     for (int a = 0; a < k; ++a) {
-      const uint64_t lo = std::min(i, nbrs[a]);
-      const uint64_t hi = std::max(i, nbrs[a]);
-      keys.push_back((lo << 32) | hi);
+      larger[bucket_fill[std::min(i, nbrs[a])]++] = std::max(i, nbrs[a]);
     }
   }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-
-  graph->pairs.resize(keys.size());
+  std::vector<int> distinct(n);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+  for (int i = 0; i < n; ++i) {
+    const auto first = larger.begin() + bucket_offsets[i];
+    std::sort(first, larger.begin() + bucket_offsets[i + 1]);
+    distinct[i] = static_cast<int>(
+        std::unique(first, larger.begin() + bucket_offsets[i + 1]) - first);
+  }
+  size_t num_pairs = 0;
+  for (int i = 0; i < n; ++i) num_pairs += distinct[i];
+  graph->pairs.resize(num_pairs);
+  size_t next = 0;
+  for (int i = 0; i < n; ++i) {
+    for (int b = 0; b < distinct[i]; ++b) {
+      graph->pairs[next++] = {i, larger[bucket_offsets[i] + b]};
+    }
+  }
   graph->incident_offsets.assign(n + 1, 0);
-  for (size_t p = 0; p < keys.size(); ++p) {
-    const int i = static_cast<int>(keys[p] >> 32);
-    const int j = static_cast<int>(keys[p] & 0xffffffffu);
-    graph->pairs[p] = {i, j};
-    ++graph->incident_offsets[i + 1];
-    ++graph->incident_offsets[j + 1];
+  for (const auto& pair : graph->pairs) {
+    ++graph->incident_offsets[pair[0] + 1];
+    ++graph->incident_offsets[pair[1] + 1];
   }
   for (int i = 0; i < n; ++i) graph->incident_offsets[i + 1] += graph->incident_offsets[i];
   graph->incident_pairs.resize(graph->incident_offsets[n]);

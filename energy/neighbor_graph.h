@@ -55,7 +55,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
                                  ThinRegionGrowth growth = ThinRegionGrowth::kWhereCommon);
 
 // Builds M and the incidence lists from already filled `graph.k` and `graph.neighbors`.
-void BuildPairs(NeighborGraph* graph);
+void BuildPairs(NeighborGraph* graph, int num_threads = 1);
 
 }  // namespace lpd::energy
 

@@ -9,40 +9,57 @@
 namespace lpd::energy {
 namespace {
 
-// The unit normal of the least-squares plane through the points with `side` (or all points
-// for side < 0), and whether there were 3 or more of them.
-bool PlaneNormal(const PointList& points, const int* members, int count,
-                 const std::vector<int>& sides, int side, Eigen::Vector3d* normal,
+// The unit normal of the least-squares plane through `points` (the centroid in *mean); false
+// for fewer than 3 points.
+bool PlaneNormal(const std::vector<Point3>& points, Eigen::Vector3d* normal,
                  Eigen::Vector3d* mean) {
+  const int count = static_cast<int>(points.size());
+  if (count < 3) return false;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int used = 0;
-  for (int a = 0; a < count; ++a) {
-    if (side >= 0 && sides[a] != side) continue;
-    sum += points[members[a]];
-    ++used;
-  }
-  if (used < 3) return false;
-  *mean = sum / used;
+  for (const Point3& p : points) sum += p;
+  *mean = sum / count;
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (int a = 0; a < count; ++a) {
-    if (side >= 0 && sides[a] != side) continue;
-    const Eigen::Vector3d d = points[members[a]] - *mean;
+  for (const Point3& p : points) {
+    const Eigen::Vector3d d = p - *mean;
     scatter += d * d.transpose();
   }
   *normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
   return true;
 }
 
+// The unit normals of the least-squares planes through the two runs (side 0 and 1 of each
+// offset), each run's points added in their order, both in one pass over the points.
+void RunNormals(const std::vector<Point3>& points, const std::vector<double>& offsets,
+                const SheetSplit& split, Eigen::Vector3d normal[2]) {
+  Eigen::Vector3d sum[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  int size[2] = {0, 0};
+  for (size_t a = 0; a < points.size(); ++a) {
+    const int side = split.Side(offsets[a]);
+    sum[side] += points[a];
+    ++size[side];
+  }
+  const Eigen::Vector3d mean[2] = {sum[0] / size[0], sum[1] / size[1]};
+  Eigen::Matrix3d scatter[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  for (size_t a = 0; a < points.size(); ++a) {
+    const int side = split.Side(offsets[a]);
+    const Eigen::Vector3d d = points[a] - mean[side];
+    scatter[side] += d * d.transpose();
+  }
+  for (int side = 0; side < 2; ++side) {
+    normal[side] =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter[side]).eigenvectors().col(0);
+  }
+}
+
 // The footprint difference of the split's two runs (sheet_split.h): the runs' means and
 // covariances within the plane (each point's offset along the normal, offsets[a], taken off).
-double FootprintDifference(const PointList& points, const int* members,
-                           const std::vector<double>& offsets, const SheetSplit& split) {
+double FootprintDifference(const std::vector<Point3>& points, const std::vector<double>& offsets,
+                           const SheetSplit& split) {
   Eigen::Vector3d sum[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   Eigen::Matrix3d moment[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   int size[2] = {0, 0};
   for (size_t a = 0; a < offsets.size(); ++a) {
-    const Eigen::Vector3d in_plane =
-        points[members[a]] - split.mean - offsets[a] * split.normal;
+    const Eigen::Vector3d in_plane = points[a] - split.mean - offsets[a] * split.normal;
     const int side = split.Side(offsets[a]);
     sum[side] += in_plane;
     moment[side] += in_plane * in_plane.transpose();
@@ -63,14 +80,16 @@ double FootprintDifference(const PointList& points, const int* members,
 
 SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   SheetSplit split;
-  const std::vector<int> none;
-  if (count < 2 * kMinSheetPoints ||
-      !PlaneNormal(points, members, count, none, -1, &split.normal, &split.mean)) {
-    return split;
-  }
-  std::vector<double> offsets(count);
-  for (int a = 0; a < count; ++a) offsets[a] = split.Offset(points[members[a]]);
-  std::vector<double> sorted = offsets;
+  if (count < 2 * kMinSheetPoints) return split;
+  // The neighbourhood, gathered once: every pass below reads it in member order.
+  thread_local std::vector<Point3> local;
+  local.resize(count);
+  for (int a = 0; a < count; ++a) local[a] = points[members[a]];
+  if (!PlaneNormal(local, &split.normal, &split.mean)) return split;
+  thread_local std::vector<double> offsets, sorted;
+  offsets.resize(count);
+  for (int a = 0; a < count; ++a) offsets[a] = split.Offset(local[a]);
+  sorted = offsets;
   std::sort(sorted.begin(), sorted.end());
   double sum = 0.0, squares = 0.0;
   for (double o : sorted) {
@@ -111,18 +130,15 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   // Two sides of a thin part are parallel; the two faces of a sharp edge are not. (A run of
   // few points has no reliable normal: the other side's cap near a thin part's rim.)
   if (std::min(best_size, count - best_size) >= kMinPointsForNormal) {
-    std::vector<int> sides(count);
-    for (int a = 0; a < count; ++a) sides[a] = split.Side(offsets[a]);
-    Eigen::Vector3d lower_normal, upper_normal, unused;
-    PlaneNormal(points, members, count, sides, 0, &lower_normal, &unused);
-    PlaneNormal(points, members, count, sides, 1, &upper_normal, &unused);
-    if (std::abs(lower_normal.dot(upper_normal)) <
+    Eigen::Vector3d run_normal[2];
+    RunNormals(local, offsets, split, run_normal);
+    if (std::abs(run_normal[0].dot(run_normal[1])) <
         std::cos(kMaxSheetAngleDegrees * M_PI / 180.0)) {
       return split;
     }
   }
   split.separation = (split.upper_mean - split.lower_mean) / within_deviation;
-  split.footprint_difference = FootprintDifference(points, members, offsets, split);
+  split.footprint_difference = FootprintDifference(local, offsets, split);
   return split;
 }
 

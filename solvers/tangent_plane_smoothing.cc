@@ -88,17 +88,20 @@ void TangentPlaneSmoother::AssembleValues(const energy::EnergyParameters& parame
 #pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
     double diagonal = parameters.eta * problem_.alpha[i];
-    for (int e = graph.incident_offsets[i]; e < graph.incident_offsets[i + 1]; ++e) {
+    const int first_incident = graph.incident_offsets[i];
+    // Row i's entries follow its incident pairs in increasing partner order, with the
+    // diagonal placed before the first partner above i: from there on come the pairs
+    // {i, j} with i < j, of which i is the first point.
+    const int first_above = diagonal_entry_[i] - k_.row_offsets[i];
+    for (int e = first_incident; e < graph.incident_offsets[i + 1]; ++e) {
       const int p = graph.incident_pairs[e];
       const double w = parameters.lambda * problem_.beta[p] * (m ? m[p] : 1.0);
       const double s = s_values ? s_values[p] : 1.0;
-      const bool i_is_first = graph.pairs[p][0] == i;
+      const int position = e - first_incident;
+      const bool i_is_first = position >= first_above;
       // (e_i - s e_j)(e_i - s e_j)^T: +w at (i,i), +w s^2 at (j,j), -w s off the diagonal.
       diagonal += i_is_first ? w : w * s * s;
-      // The row's entries follow its incident pairs, with the diagonal before the first
-      // partner above i.
-      const int entry = k_.row_offsets[i] + (e - graph.incident_offsets[i]);
-      k_.values[entry < diagonal_entry_[i] ? entry : entry + 1] = -w * s;
+      k_.values[k_.row_offsets[i] + (i_is_first ? position + 1 : position)] = -w * s;
     }
     k_.values[diagonal_entry_[i]] = diagonal;
   }

@@ -56,6 +56,9 @@ TEST(NeighborGraph, PairsAreTheSymmetricClosureOnce) {
     }
   }
   for (int count : seen) EXPECT_EQ(count, 2);
+  // In lexicographic order, whatever the thread count.
+  EXPECT_TRUE(std::is_sorted(graph.pairs.begin(), graph.pairs.end()));
+  EXPECT_EQ(BuildNeighborGraph(points, 6, 2).pairs, graph.pairs);
 }
 
 TEST(NeighborGraph, ExcludesSelfAmongDuplicates) {
