@@ -399,8 +399,10 @@ std::vector<Parameter> FinalStepParameters() {
           solvers::ProjectionName, solvers::ParseProjection, "plane, sphere"),
       Integer("blended_surfaces", kBoth,
               {kFinal,
-               "a point moves to the mean of its projections onto the surfaces of itself and "
-               "its nearest neighbours, this many in all (at most k + 1)",
+               "a point moves to the weighted mean of its projections onto the surfaces of "
+               "itself and its nearest neighbours, this many in all (at most k + 1); a surface "
+               "that moves it far from where its own surface does (an edge's other face, a thin "
+               "part's other side) counts little",
                "", "1"},
               [](O& o) -> int& { return o.final_step.blended_surfaces; }),
       Integer("even_spacing", kBoth,

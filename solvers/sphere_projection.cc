@@ -161,23 +161,50 @@ std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
   return spheres;
 }
 
+double BlendAgreementScale(const energy::Problem& problem,
+                           const std::vector<LocalSurface>& surfaces) {
+  std::vector<double> squared_moves;
+  squared_moves.reserve(problem.num_points());
+  for (int i = 0; i < problem.num_points(); ++i) {
+    Eigen::Vector3d on_surface, normal;
+    if (surfaces[i].Project(problem.points[i], &on_surface, &normal)) {
+      squared_moves.push_back((on_surface - problem.points[i]).squaredNorm());
+    }
+  }
+  if (squared_moves.empty()) return 0.0;
+  const auto middle = squared_moves.begin() + squared_moves.size() / 2;
+  std::nth_element(squared_moves.begin(), middle, squared_moves.end());
+  return kBlendAgreement * kBlendAgreement * *middle;
+}
+
 bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
-                      int count, const Eigen::Vector3d& p, Eigen::Vector3d* projected,
-                      Eigen::Vector3d* normal) {
+                      int count, const Eigen::Vector3d& p, double agreement_scale,
+                      Eigen::Vector3d* projected, Eigen::Vector3d* normal) {
   Eigen::Vector3d position_sum = Eigen::Vector3d::Zero(), normal_sum = Eigen::Vector3d::Zero();
-  const Eigen::Vector3d* orientation = nullptr;
-  int used = 0;
+  const LocalSurface* first = nullptr;
+  Eigen::Vector3d reference;
+  double weight_sum = 0.0;
   for (int a = 0; a < count; ++a) {
     const LocalSurface& surface = surfaces[candidates[a]];
     Eigen::Vector3d on_surface, surface_normal;
     if (!surface.Project(p, &on_surface, &surface_normal)) continue;
-    if (orientation == nullptr) orientation = &surface.orientation;
-    position_sum += on_surface;
-    normal_sum += surface_normal.dot(*orientation) < 0.0 ? -surface_normal : surface_normal;
-    ++used;
+    if (first == nullptr) {
+      first = &surface;
+      reference = on_surface;
+    }
+    // 1 for the first surface and wherever the scale is 0 (a plain mean).
+    double weight = 1.0;
+    if (agreement_scale > 0.0) {
+      weight = 1.0 / (1.0 + (on_surface - reference).squaredNorm() / agreement_scale);
+      weight *= weight;
+    }
+    position_sum += weight * on_surface;
+    normal_sum +=
+        weight * (surface_normal.dot(first->orientation) < 0.0 ? -surface_normal : surface_normal);
+    weight_sum += weight;
   }
-  if (used == 0) return false;
-  *projected = position_sum / used;
+  if (first == nullptr) return false;
+  *projected = position_sum / weight_sum;
   *normal = normal_sum.normalized();
   return true;
 }
@@ -188,6 +215,7 @@ void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
                                 energy::PointList* normals) {
   const int n = problem.num_points();
   const int count = std::min(blend, problem.k() + 1);
+  const double agreement_scale = BlendAgreementScale(problem, surfaces);
   points->resize(n);
   normals->resize(n);
 #pragma omp parallel num_threads(num_threads)
@@ -198,8 +226,8 @@ void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
       candidates[0] = i;
       std::copy_n(problem.graph.NeighborsOf(i), count - 1, candidates.begin() + 1);
       Eigen::Vector3d projected, normal;
-      if (ProjectOntoBlend(surfaces, candidates.data(), count, problem.points[i], &projected,
-                           &normal)) {
+      if (ProjectOntoBlend(surfaces, candidates.data(), count, problem.points[i],
+                           agreement_scale, &projected, &normal)) {
         (*points)[i] = problem.frame.ToInput(projected);
         (*normals)[i] = normal;
       } else {

@@ -55,12 +55,27 @@ std::vector<LocalSurface> TangentPlaneSurfaces(const energy::Variables& v);
 std::vector<LocalSurface> FitLocalSpheres(const energy::Problem& problem,
                                           const energy::Variables& v, int num_threads);
 
-// p (normalized frame) moved to the mean of its projections onto surfaces[j] for the `count`
-// indices j of `candidates`, and its normal to the mean of theirs, oriented like that of the
-// first surface that has one. False when none of them has a surface.
+// The blend's robustness (docs/method.md, "The blend of surfaces"): a surface whose projection
+// of p lies d from the first surface's counts (1 + d^2 / s)^-2, with the scale s = c^2 m, c
+// this value and m the median over the problem's points of the squared distance their own
+// surface moves them (about the square of the noise, one scale for every point). Surfaces
+// from across an edge or a thin part, and poorly fitted ones, move p elsewhere than p's own
+// surface does and count little.
+constexpr double kBlendAgreement = 4.0;
+
+// s above for the problem's points and their `surfaces` (problem order); 0 when none of them
+// has a surface.
+double BlendAgreementScale(const energy::Problem& problem,
+                           const std::vector<LocalSurface>& surfaces);
+
+// p (normalized frame) moved to the weighted mean of its projections onto surfaces[j] for the
+// `count` indices j of `candidates`, and its normal to the weighted mean of theirs, oriented
+// like that of the first surface that has one; each weighs (1 + d^2 / agreement_scale)^-2,
+// d its projection's distance from the first one's (agreement_scale 0: a plain mean). False
+// when none of them has a surface.
 bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
-                      int count, const Eigen::Vector3d& p, Eigen::Vector3d* projected,
-                      Eigen::Vector3d* normal);
+                      int count, const Eigen::Vector3d& p, double agreement_scale,
+                      Eigen::Vector3d* projected, Eigen::Vector3d* normal);
 
 // Each problem point i moved onto the blend of the surfaces of i and of its nearest
 // min(blend, k + 1) - 1 neighbours in N(i) (blend = 1: its own surface, Sec. 3.4). `points`

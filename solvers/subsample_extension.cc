@@ -30,6 +30,7 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
   const int neighbors = problem.k() + 1;
   const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options);
   const int blend = std::min(options.blended_surfaces, neighbors);
+  const double agreement_scale = BlendAgreementScale(problem, surfaces);
   projected->resize(count);
   normals->resize(count);
   PointIndicators& out = *query_indicators;
@@ -42,7 +43,8 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
   auto extend = [&](int q, const int* nearest, const double*, int found) {
     const energy::Point3 p = query(q);
     Eigen::Vector3d on_surface, normal;
-    if (ProjectOntoBlend(surfaces, nearest, std::min(blend, found), p, &on_surface, &normal)) {
+    if (ProjectOntoBlend(surfaces, nearest, std::min(blend, found), p, agreement_scale,
+                         &on_surface, &normal)) {
       (*projected)[q] = problem.frame.ToInput(on_surface);
       (*normals)[q] = normal;
     } else {

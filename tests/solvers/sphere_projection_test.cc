@@ -53,27 +53,70 @@ TEST(SphereProjection, AveragesNoisyPlaneOffsetsOverTheNeighbours) {
   EXPECT_LT(RmsDistanceToTheSphere(on_spheres), 0.5 * RmsDistanceToTheSphere(on_planes));
 }
 
-TEST(SphereProjection, TheBlendOfParallelPlanesIsTheirMeanPlane) {
-  // Planes z = c_j (as u0 + u.x = 0 with |u| = 2): p lands at the mean height, keeps x and y.
-  const double heights[] = {0.1, -0.3, 0.05, 0.4};
-  std::vector<LocalSurface> surfaces(4);
-  for (int j = 0; j < 4; ++j) {
+// Planes z = c_j, written as u0 + u.x = 0 with |u| = 2 and alternating signs.
+std::vector<LocalSurface> HorizontalPlanes(const std::vector<double>& heights) {
+  std::vector<LocalSurface> surfaces(heights.size());
+  for (size_t j = 0; j < heights.size(); ++j) {
     surfaces[j].kind = LocalSurface::Kind::kPlane;
     surfaces[j].plane << 0, 0, (j % 2 ? -2 : 2), (j % 2 ? 2 : -2) * heights[j];
     surfaces[j].orientation << 0, 0, 1;
   }
-  const int candidates[] = {2, 0, 3, 1};
+  return surfaces;
+}
+
+TEST(SphereProjection, TheBlendOfTwoParallelPlanesFollowsTheWeightRule) {
+  // p between z = 0.1 (the first candidate) and z = 0.4. At scale 0.36 the second plane, 0.3
+  // from the first one's projection, weighs (1 + 0.09 / 0.36)^-2 = 0.64: p lands at
+  // (0.1 + 0.64 * 0.4) / 1.64 and keeps x and y. At scale 0 the blend is the plain mean.
+  const std::vector<LocalSurface> surfaces = HorizontalPlanes({0.1, 0.4});
+  const int candidates[] = {0, 1};
   Eigen::Vector3d projected, normal;
-  ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 4, Eigen::Vector3d(0.7, -1.2, 3.0),
+  ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 2, Eigen::Vector3d(0.5, -0.2, 0.0), 0.36,
                                &projected, &normal));
-  EXPECT_NEAR((projected - Eigen::Vector3d(0.7, -1.2, 0.0625)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((projected - Eigen::Vector3d(0.5, -0.2, 0.356 / 1.64)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((normal - Eigen::Vector3d(0, 0, 1)).norm(), 0.0, 1e-15);
-  ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates + 1, 2, Eigen::Vector3d(0.0, 0.0, 0.0),
+  ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 2, Eigen::Vector3d(0.5, -0.2, 0.0), 0.0,
                                &projected, &normal));
   EXPECT_NEAR(projected.z(), 0.25, 1e-15);
+  // Planes that agree (at one height) blend into that plane; none with a surface: false.
+  const std::vector<LocalSurface> same = HorizontalPlanes({0.25, 0.25, 0.25});
+  const int three[] = {2, 0, 1};
+  ASSERT_TRUE(ProjectOntoBlend(same, three, 3, Eigen::Vector3d(0.7, -1.2, 3.0), 0.01,
+                               &projected, &normal));
+  EXPECT_NEAR((projected - Eigen::Vector3d(0.7, -1.2, 0.25)).norm(), 0.0, 1e-15);
   std::vector<LocalSurface> none(2);
-  const int both[] = {0, 1};
-  EXPECT_FALSE(ProjectOntoBlend(none, both, 2, Eigen::Vector3d::Zero(), &projected, &normal));
+  EXPECT_FALSE(ProjectOntoBlend(none, candidates, 2, Eigen::Vector3d::Zero(), 0.01, &projected,
+                                &normal));
+}
+
+TEST(SphereProjection, ASurfaceThatMovesThePointElsewhereBarelyCounts) {
+  // Four planes within 0.7 of each other and one 30 away (the other side of a thin part, a
+  // poor fit): the plain mean lands near z = 6; at a scale of 0.2^2 the blend stays within
+  // 0.05 of the four's mean, 0.0625.
+  const std::vector<LocalSurface> surfaces = HorizontalPlanes({0.1, -0.3, 0.05, 0.4, 30.0});
+  const int candidates[] = {2, 0, 4, 3, 1};
+  Eigen::Vector3d projected, normal;
+  ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 5, Eigen::Vector3d(0.7, -1.2, 0.2), 0.04,
+                               &projected, &normal));
+  EXPECT_NEAR(projected.x(), 0.7, 1e-15);
+  EXPECT_NEAR(projected.y(), -1.2, 1e-15);
+  EXPECT_NEAR(projected.z(), 0.0625, 0.05);
+  ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 5, Eigen::Vector3d(0.7, -1.2, 0.2), 0.0,
+                               &projected, &normal));
+  EXPECT_NEAR(projected.z(), 6.05, 1e-12);
+}
+
+TEST(SphereProjection, TheAgreementScaleIsTheMedianSquaredMoveOntoTheOwnSurface) {
+  // Points at heights 0.1, -0.3, 0.02, 0.5 and 0.2 above the plane z = 0 (one point without a
+  // surface): the moves squared are 0.01, 0.09, 0.0004 and 0.25; their upper median is 0.09.
+  energy::Problem problem;
+  const double heights[] = {0.1, -0.3, 0.02, 0.5, 0.2};
+  for (double z : heights) problem.points.emplace_back(0.3, -0.1, z);
+  std::vector<LocalSurface> surfaces = HorizontalPlanes({0.0, 0.0, 0.0, 0.0, 0.0});
+  surfaces[4].kind = LocalSurface::Kind::kNone;
+  EXPECT_NEAR(BlendAgreementScale(problem, surfaces), kBlendAgreement * kBlendAgreement * 0.09,
+              1e-15);
+  EXPECT_EQ(BlendAgreementScale(problem, std::vector<LocalSurface>(5)), 0.0);
 }
 
 TEST(SphereProjection, BlendingNeighboursSurfacesAveragesTheirNoiseFurther) {
