@@ -235,8 +235,11 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       options.final_step.projection == Projection::kSphere
           ? FitLocalSpheres(problem, state.variables, options.settings.num_threads)
           : TangentPlaneSurfaces(state.variables);
+  // One weighting scale for the solved points and for those a subsample run extends to.
+  const double agreement_scale = BlendAgreementScale(problem, surfaces);
   ProjectOntoBlendedSurfaces(problem, surfaces, options.final_step.blended_surfaces,
-                             options.settings.num_threads, &result.projected, &result.normals);
+                             agreement_scale, options.settings.num_threads, &result.projected,
+                             &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
                                          options.final_step);
   // Even spacing and the offset feedback move the output in the normalized frame; outliers
@@ -294,9 +297,9 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   energy::PointList extended_points, extended_normals;
   PointIndicators extended;
   if (!state.left_out.empty()) {
-    ExtendToPoints(problem, state.variables, surfaces, result.indicators, result.summary.mu_l,
-                   options.final_step, state.left_out_points, options.settings.num_threads,
-                   &extended_points, &extended_normals, &extended);
+    ExtendToPoints(problem, state.variables, surfaces, agreement_scale, result.indicators,
+                   result.summary.mu_l, options.final_step, state.left_out_points,
+                   options.settings.num_threads, &extended_points, &extended_normals, &extended);
     if (feed_back) {
       energy::PointList points(extended_points.size());
       std::vector<uint8_t> extended_movable(points.size());

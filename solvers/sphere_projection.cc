@@ -211,11 +211,10 @@ bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* cand
 
 void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
                                 const std::vector<LocalSurface>& surfaces, int blend,
-                                int num_threads, energy::PointList* points,
-                                energy::PointList* normals) {
+                                double agreement_scale, int num_threads,
+                                energy::PointList* points, energy::PointList* normals) {
   const int n = problem.num_points();
   const int count = std::min(blend, problem.k() + 1);
-  const double agreement_scale = BlendAgreementScale(problem, surfaces);
   points->resize(n);
   normals->resize(n);
 #pragma omp parallel num_threads(num_threads)

@@ -78,13 +78,14 @@ bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* cand
                       Eigen::Vector3d* projected, Eigen::Vector3d* normal);
 
 // Each problem point i moved onto the blend of the surfaces of i and of its nearest
-// min(blend, k + 1) - 1 neighbours in N(i) (blend = 1: its own surface, Sec. 3.4). `points`
+// min(blend, k + 1) - 1 neighbours in N(i) (blend = 1: its own surface, Sec. 3.4), weighted
+// at `agreement_scale` (BlendAgreementScale of the same surfaces; 0: a plain mean). `points`
 // and `normals` in problem order and the input frame; a point without a surface stays where
 // it is with a zero normal.
 void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
                                 const std::vector<LocalSurface>& surfaces, int blend,
-                                int num_threads, energy::PointList* points,
-                                energy::PointList* normals);
+                                double agreement_scale, int num_threads,
+                                energy::PointList* points, energy::PointList* normals);
 
 }  // namespace lpd::solvers
 

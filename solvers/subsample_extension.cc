@@ -21,16 +21,16 @@ std::vector<int> ChooseSubsample(int n, int count, uint64_t seed) {
 }
 
 void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
-                    const std::vector<LocalSurface>& surfaces, const PointIndicators& indicators,
-                    double mu_l, const FinalDenoisingOptions& options,
-                    const energy::PointList& queries, int num_threads,
+                    const std::vector<LocalSurface>& surfaces, double agreement_scale,
+                    const PointIndicators& indicators, double mu_l,
+                    const FinalDenoisingOptions& options, const energy::PointList& queries,
+                    int num_threads,
                     energy::PointList* projected, energy::PointList* normals,
                     PointIndicators* query_indicators) {
   const int count = static_cast<int>(queries.size());
   const int neighbors = problem.k() + 1;
   const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options);
   const int blend = std::min(options.blended_surfaces, neighbors);
-  const double agreement_scale = BlendAgreementScale(problem, surfaces);
   projected->resize(count);
   normals->resize(count);
   PointIndicators& out = *query_indicators;

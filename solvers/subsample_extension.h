@@ -28,13 +28,15 @@ namespace lpd::solvers {
 std::vector<int> ChooseSubsample(int n, int count, uint64_t seed);
 
 // What the points `queries` (input frame) get from the subsample's `problem`, its final
-// variables `v`, the local `surfaces` of its points and its `indicators` (problem order);
+// variables `v`, the local `surfaces` of its points (blended at `agreement_scale`, as in
+// ProjectOntoBlendedSurfaces) and its `indicators` (problem order);
 // `mu_l` as in ComputeIndicators. Outputs are in the order of `queries`,
 // positions in the input frame.
 void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
-                    const std::vector<LocalSurface>& surfaces, const PointIndicators& indicators,
-                    double mu_l, const FinalDenoisingOptions& options,
-                    const energy::PointList& queries, int num_threads,
+                    const std::vector<LocalSurface>& surfaces, double agreement_scale,
+                    const PointIndicators& indicators, double mu_l,
+                    const FinalDenoisingOptions& options, const energy::PointList& queries,
+                    int num_threads,
                     energy::PointList* projected, energy::PointList* normals,
                     PointIndicators* query_indicators);
 

@@ -32,7 +32,7 @@ TEST(SphereProjection, ExactTangentPlanesPutEveryPointBackOnTheSphere) {
   const DisplacedSphere sphere = MakeDisplacedSphere(2000, 0.01, 0.0);
   energy::PointList projected, normals;
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 2),
-                             1, 2, &projected, &normals);
+                             1, 0.0, 2, &projected, &normals);
   EXPECT_LT(LargestDistanceToTheSphere(projected), 1e-9);
   for (size_t i = 0; i < projected.size(); ++i) {
     ASSERT_NEAR(normals[i].dot(projected[i].normalized()), 1.0, 1e-9) << "normal " << i;
@@ -44,8 +44,8 @@ TEST(SphereProjection, AveragesNoisyPlaneOffsetsOverTheNeighbours) {
   const DisplacedSphere sphere = MakeDisplacedSphere(4000, 0.01, kOffsetNoise);
   energy::PointList on_spheres, on_planes, normals;
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 2),
-                             1, 2, &on_spheres, &normals);
-  ProjectOntoBlendedSurfaces(sphere.problem, TangentPlaneSurfaces(sphere.variables), 1, 2,
+                             1, 0.0, 2, &on_spheres, &normals);
+  ProjectOntoBlendedSurfaces(sphere.problem, TangentPlaneSurfaces(sphere.variables), 1, 0.0, 2,
                              &on_planes, &normals);
   // Each plane's own offset error stays in its projection; the sphere fit averages about
   // 15 partners' (measured: RMS about a third of the plane projection's).
@@ -125,12 +125,16 @@ TEST(SphereProjection, BlendingNeighboursSurfacesAveragesTheirNoiseFurther) {
   const DisplacedSphere noisy = MakeDisplacedSphere(4000, 0.01, kOffsetNoise);
   energy::PointList own, blended, normals;
   // Identical spheres blend into the same sphere.
-  ProjectOntoBlendedSurfaces(exact.problem, FitLocalSpheres(exact.problem, exact.variables, 2),
-                             30, 2, &blended, &normals);
+  const std::vector<LocalSurface> exact_spheres =
+      FitLocalSpheres(exact.problem, exact.variables, 2);
+  ProjectOntoBlendedSurfaces(exact.problem, exact_spheres, 30,
+                             BlendAgreementScale(exact.problem, exact_spheres), 2, &blended,
+                             &normals);
   EXPECT_LT(LargestDistanceToTheSphere(blended), 1e-9);
   const std::vector<LocalSurface> spheres = FitLocalSpheres(noisy.problem, noisy.variables, 2);
-  ProjectOntoBlendedSurfaces(noisy.problem, spheres, 1, 2, &own, &normals);
-  ProjectOntoBlendedSurfaces(noisy.problem, spheres, 30, 2, &blended, &normals);
+  ProjectOntoBlendedSurfaces(noisy.problem, spheres, 1, 0.0, 2, &own, &normals);
+  ProjectOntoBlendedSurfaces(noisy.problem, spheres, 30,
+                             BlendAgreementScale(noisy.problem, spheres), 2, &blended, &normals);
   // Measured: RMS 0.604e-3 alone, 0.527e-3 blending 5, 0.461e-3 blending all 11 (k = 10).
   EXPECT_LT(RmsDistanceToTheSphere(blended), 0.85 * RmsDistanceToTheSphere(own));
 }
@@ -145,11 +149,11 @@ TEST(SphereProjection, CutPairsStayOutOfTheFit) {
   sphere.variables.m[pair] = 0.0;
   energy::PointList projected, normals;
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 1),
-                             1, 1, &projected, &normals);
+                             1, 0.0, 1, &projected, &normals);
   EXPECT_LT(std::abs(projected[0].norm() - kRadius), 1e-9);
   sphere.variables.m[pair] = 1.0;  // with the pair kept, the tilted plane pulls the fit off
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 1),
-                             1, 1, &projected, &normals);
+                             1, 0.0, 1, &projected, &normals);
   EXPECT_GT(std::abs(projected[0].norm() - kRadius), 1e-6);
 }
 

@@ -55,11 +55,12 @@ TEST(ExtendToPoints, ASolvedPointGetsItsOwnProjectionAndOutlierScore) {
   const std::vector<LocalSurface> surfaces = FitLocalSpheres(problem, sphere.variables, 2);
   const PointIndicators own = ComputeIndicators(problem, sphere.variables, kMuL, options);
   energy::PointList own_points, own_normals, points, normals;
-  ProjectOntoBlendedSurfaces(problem, surfaces, options.blended_surfaces, 2, &own_points,
-                             &own_normals);
+  const double agreement_scale = BlendAgreementScale(problem, surfaces);
+  ProjectOntoBlendedSurfaces(problem, surfaces, options.blended_surfaces, agreement_scale, 2,
+                             &own_points, &own_normals);
   PointIndicators extended;
-  ExtendToPoints(problem, sphere.variables, surfaces, own, kMuL, options, problem.points, 2,
-                 &points, &normals, &extended);
+  ExtendToPoints(problem, sphere.variables, surfaces, agreement_scale, own, kMuL, options,
+                 problem.points, 2, &points, &normals, &extended);
   for (int i = 0; i < problem.num_points(); ++i) {
     ASSERT_LT((points[i] - own_points[i]).norm(), 1e-15) << i;
     ASSERT_LT((normals[i] - own_normals[i]).norm(), 1e-15) << i;
@@ -83,10 +84,10 @@ TEST(ExtendToPoints, PointsLeftOutOfAnExactSphereLandOnIt) {
   }
   energy::PointList points, normals;
   PointIndicators extended;
-  ExtendToPoints(sphere.problem, sphere.variables,
-                 FitLocalSpheres(sphere.problem, sphere.variables, 1), own, 1e-4,
-                 FinalDenoisingOptions(),
-                 left_out, 1, &points, &normals, &extended);
+  const std::vector<LocalSurface> spheres = FitLocalSpheres(sphere.problem, sphere.variables, 1);
+  ExtendToPoints(sphere.problem, sphere.variables, spheres,
+                 BlendAgreementScale(sphere.problem, spheres), own, 1e-4,
+                 FinalDenoisingOptions(), left_out, 1, &points, &normals, &extended);
   for (size_t q = 0; q < left_out.size(); ++q) {
     ASSERT_NEAR(points[q].norm(), kRadius, 1e-9) << q;
     ASSERT_NEAR(normals[q].dot(left_out[q].normalized()), 1.0, 1e-9) << q;
