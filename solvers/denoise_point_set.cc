@@ -88,7 +88,7 @@ void SplitOffUnsolved(const std::vector<int>& solved, const energy::PointList& o
 // frame), the flagged outliers standing; returns how many points moved.
 int SeparateSides(const energy::Frame& frame, const energy::PointList& inputs,
                   const energy::PointList& normals, const std::vector<uint8_t>& is_outlier,
-                  int num_threads, energy::PointList* outputs) {
+                  double noise_sigma, int num_threads, energy::PointList* outputs) {
   energy::PointList normalized(outputs->size());
   std::vector<uint8_t> movable(outputs->size());
   for (size_t i = 0; i < normalized.size(); ++i) {
@@ -97,7 +97,7 @@ int SeparateSides(const energy::Frame& frame, const energy::PointList& inputs,
   }
   int moved = 0;
   const energy::PointList separated =
-      SeparateMergedSides(inputs, normalized, normals, movable, num_threads, &moved);
+      SeparateMergedSides(inputs, normalized, normals, movable, noise_sigma, num_threads, &moved);
   for (size_t i = 0; i < separated.size(); ++i) {
     if (separated[i] != normalized[i]) (*outputs)[i] = frame.ToInput(separated[i]);
   }
@@ -288,7 +288,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   if (separate_sides) {
     result.num_separated =
         SeparateSides(problem.frame, problem.points, result.normals, result.indicators.is_outlier,
-                      options.settings.num_threads, &result.projected);
+                      estimates.noise_sigma, options.settings.num_threads, &result.projected);
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
@@ -319,8 +319,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
         inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
       }
       result.num_separated += SeparateSides(problem.frame, inputs, extended_normals,
-                                            extended.is_outlier, options.settings.num_threads,
-                                            &extended_points);
+                                            extended.is_outlier, estimates.noise_sigma,
+                                            options.settings.num_threads, &extended_points);
     }
   }
   const std::vector<int>& left_out = state.left_out;

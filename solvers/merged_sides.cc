@@ -120,11 +120,41 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
   return regions;
 }
 
+energy::PointList SidesReference(const energy::PointList& outputs,
+                                 const energy::PointList& normals,
+                                 const std::vector<int>& anchors, double noise_sigma,
+                                 int num_threads) {
+  energy::PointList reference = outputs;
+  const int count = static_cast<int>(anchors.size());
+  if (!(noise_sigma > 0.0) || count < 2) return reference;
+  energy::PointList anchor_points(count);
+  for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
+  const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
+  const energy::NearestNeighbors search(anchor_points);
+  search.ForEach(count, std::min(kSidesReferenceNeighbors, count), num_threads,
+                 [&](int r) { return anchor_points[r]; },
+                 [&](int r, const int* nearest, const double*, int found) {
+                   const int i = anchors[r];
+                   const energy::Point3& n = normals[i];
+                   double sum = 0.0;
+                   int used = 0;
+                   for (int b = 0; b < found; ++b) {
+                     if (std::abs(n.dot(normals[anchors[nearest[b]]])) < min_cosine) continue;
+                     const double height = n.dot(anchor_points[nearest[b]] - outputs[i]);
+                     if (!(std::abs(height) < noise_sigma)) continue;
+                     sum += height;
+                     ++used;
+                   }
+                   if (used > 0) reference[i] = outputs[i] + (sum / used) * n;
+                 });
+  return reference;
+}
+
 energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                                       const energy::PointList& outputs,
                                       const energy::PointList& normals,
-                                      const std::vector<uint8_t>& movable, int num_threads,
-                                      int* moved) {
+                                      const std::vector<uint8_t>& movable, double noise_sigma,
+                                      int num_threads, int* moved) {
   if (moved) *moved = 0;
   energy::PointList result = outputs;
   std::vector<int> anchors;  // the movable points with a normal
@@ -134,7 +164,7 @@ energy::PointList SeparateMergedSides(const energy::PointList& inputs,
   const int n = static_cast<int>(outputs.size());
   if (static_cast<int>(anchors.size()) < kSidesRegionPoints) return result;
 
-  // Every point's offset from its anchor's plane: its own, or its nearest anchor's.
+  // Every point's offset from its anchor's reference plane: its own, or its nearest anchor's.
   std::vector<int> anchor_of(n, -1);
   for (int i : anchors) anchor_of[i] = i;
   energy::PointList anchor_points(anchors.size());
@@ -151,12 +181,14 @@ energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                             anchor_of[others[r]] = anchors[nearest[0]];
                           });
   }
+  const energy::PointList reference =
+      SidesReference(outputs, normals, anchors, noise_sigma, num_threads);
   energy::PointList positions(n);
   std::vector<double> offset(n);
   for (int i = 0; i < n; ++i) {
     const int a = anchor_of[i];
     positions[i] = outputs[a];
-    offset[i] = normals[a].dot(inputs[i] - outputs[a]);
+    offset[i] = normals[a].dot(inputs[i] - reference[a]);
   }
 
   const SideRegions regions = MeasureSideRegions(positions, offset, anchors, num_threads);
@@ -168,7 +200,7 @@ energy::PointList SeparateMergedSides(const energy::PointList& inputs,
     if (region_of[r] < 0) continue;
     const int i = anchors[r];
     const double half_gap = regions.sides[region_of[r]].half_gap;
-    result[i] = outputs[i] + (offset[i] >= 0.0 ? half_gap : -half_gap) * normals[i];
+    result[i] = reference[i] + (offset[i] >= 0.0 ? half_gap : -half_gap) * normals[i];
     ++count;
   }
   if (moved) *moved = count;

@@ -104,17 +104,40 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
 // neighborhood_size.h).
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates);
 
+// The offsets z are measured from a reference surface, not from each point's own output.
+// Where the graph split part of a thin region by side (energy/sheet_split.h), each output
+// follows its own input part way: the walls of a hollow box 1.9 noise deviations thick, at
+// 50K points and 3% noise, come out near their mid-surface but spread over a quarter of the
+// noise with the input's side, and the offsets from the outputs lose their two-sided shape
+// (their regions read 2.9 where such sides read 2.56; docs/method.md, "Thin parts"). The
+// reference moves each output along its normal n by the mean of n.(o_j - o) over those of its
+// kSidesReferenceNeighbors nearest outputs o_j whose normals lie within
+// kSidesReferenceMaxAngleDegrees of n (not the other face of an edge) and whose offset
+// |n.(o_j - o)| is under the noise's deviation: the middle of what the outputs of a merged
+// part spread over, but not the other side of a part that the graph split cleanly (the split
+// takes sides 2.8 deviations apart or more).
+constexpr int kSidesReferenceNeighbors = 60;
+constexpr double kSidesReferenceMaxAngleDegrees = 20.0;
+
+// The reference above for the `anchors` (indices into outputs, each with a unit normal),
+// from the outputs of the anchors only; every other entry is its output. `noise_sigma` in the
+// frame of the points; 0: the outputs themselves. Deterministic for any thread count.
+energy::PointList SidesReference(const energy::PointList& outputs,
+                                 const energy::PointList& normals,
+                                 const std::vector<int>& anchors, double noise_sigma,
+                                 int num_threads);
+
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
-// movable point of a merged region moved along its normal to sign(z) a (above). Points
-// without movable[i] or a normal stay, but their offsets count. Unchanged when fewer than
-// kSidesRegionPoints points take part or under kMinMergedRegionShare of the regions read as
-// merged. `moved` (optional): how many points moved.
-// Deterministic for any thread count.
+// movable point of a merged region moved along its normal to its reference (SidesReference,
+// with `noise_sigma`) + sign(z) a (above). Points without movable[i] or a normal stay, but
+// their offsets count. Unchanged when fewer than kSidesRegionPoints points take part or under
+// kMinMergedRegionShare of the regions read as merged. `moved` (optional): how many points
+// moved. Deterministic for any thread count.
 energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                                       const energy::PointList& outputs,
                                       const energy::PointList& normals,
-                                      const std::vector<uint8_t>& movable, int num_threads,
-                                      int* moved = nullptr);
+                                      const std::vector<uint8_t>& movable, double noise_sigma,
+                                      int num_threads, int* moved = nullptr);
 
 }  // namespace lpd::solvers
 

@@ -1,7 +1,9 @@
 // The merged sides of a thin part against closed forms: the two sides' gap and noise
 // recovered from a two-Gaussian mixture's moments, flat-topped noise and well-apart sides not
 // taken; points over sides two noise deviations apart, moved to the side their offset's sign
-// picks, come out on a side and closer to their own than the input and the mid-plane; one
+// picks, come out on a side and closer to their own than the input and the mid-plane, also
+// where the outputs follow their inputs part way, while outputs on their own side stay; the
+// reference surface against brute force; one
 // Gaussian sheet does not move, also with its farthest points flagged as outliers; the
 // regions' moments and medians against brute-force nearest points, and their growth from
 // seeds through neighbouring regions between the two bars.
@@ -83,7 +85,7 @@ TEST(SeparateMergedSides, PointsOverSidesTwoDeviationsApartMoveToTheirSide) {
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   int moved = 0;
   const energy::PointList separated =
-      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved);
+      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 2, &moved);
   EXPECT_EQ(moved, static_cast<int>(m.outputs.size()));
   // Closed forms: the input is sigma sqrt(2 / pi) = 0.80 sigma from its side, the mid-plane
   // sigma; a point at the side its sign picks 2 sigma Phi(-1) = 0.32 sigma, with the side's
@@ -98,7 +100,7 @@ TEST(SeparateMergedSides, PointsOverSidesTwoDeviationsApartMoveToTheirSide) {
   for (const energy::Point3& p : separated) to_nearer_side += std::abs(std::abs(p.z()) - sigma);
   EXPECT_LT(to_nearer_side / separated.size(), 0.1 * sigma);
   // Only along the normal; the same for any thread count.
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 1), separated);
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 1), separated);
   for (size_t i = 0; i < separated.size(); ++i) {
     EXPECT_EQ(separated[i].x(), m.outputs[i].x());
     EXPECT_EQ(separated[i].y(), m.outputs[i].y());
@@ -110,7 +112,7 @@ TEST(SeparateMergedSides, PointsOverSidesTwoDeviationsApartMoveToTheirSide) {
 void ExpectOneSheetStays(const Merged& m, const std::vector<uint8_t>& movable) {
   int moved = -1;
   const energy::PointList separated =
-      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved);
+      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 0.002, 2, &moved);
   double shift = 0.0;
   for (size_t i = 0; i < separated.size(); ++i) shift += std::abs(separated[i].z());
   EXPECT_LT(moved, 0.05 * m.outputs.size());
@@ -223,7 +225,9 @@ TEST(MeasureSideRegions, RegionsUnderTheGrowthBarNextToMergedOnesAreMerged) {
       EXPECT_FALSE(regions.merged[c]) << "x = " << x;
       ++right;
     }
-    if (x < 60) EXPECT_TRUE(regions.seed[c]) << "x = " << x;
+    if (x < 60) {
+      EXPECT_TRUE(regions.seed[c]) << "x = " << x;
+    }
   }
   EXPECT_GT(middle, 0);
   EXPECT_GT(right, 0);
@@ -241,13 +245,107 @@ TEST(MeasureSideRegions, RegionsUnderTheGrowthBarNextToMergedOnesAreMerged) {
   EXPECT_EQ(few_seeds.merged, few_seeds.seed);
 }
 
+// The outputs of a part whose sides the graph split here and there: each follows its own
+// input part way, by a share drawn from [0, 0.8] (heights beta z). The offsets from the
+// outputs are a scale mixture of the two sides' (kurtosis about 3.7, over the bar); from
+// the reference, the mean height of the neighbours' outputs (about 0, the mid-plane), they
+// read as the two sides again.
+TEST(SeparateMergedSides, OutputsFollowingTheirInputsPartWayAreStillSeparated) {
+  const double sigma = 0.002;
+  Merged m = MergedSheet(sigma, sigma, 11);
+  std::mt19937_64 random(12);
+  std::uniform_real_distribution<double> share(0.0, 0.8);
+  for (size_t i = 0; i < m.outputs.size(); ++i) {
+    m.outputs[i].z() = share(random) * m.inputs[i].z();
+  }
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  int moved = 0;
+  const energy::PointList separated =
+      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 2, &moved);
+  EXPECT_GT(moved, 0.9 * m.outputs.size());
+  // Nearer their own side than the input (0.80 sigma) and these outputs (0.70 sigma): 0.48
+  // sigma, against 0.32 for outputs on the mid-plane (PointsOverSidesTwoDeviationsApart...),
+  // as the band around each output keeps its reference part way towards it.
+  EXPECT_LT(MeanDistanceToSide(separated, m.side), 0.55 * sigma);
+  EXPECT_GT(MeanDistanceToSide(m.outputs, m.side), 0.65 * sigma);
+  // Measured from the outputs themselves (no noise estimate, no reference), they stay.
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 0.0, 2, &moved),
+            m.outputs);
+  EXPECT_EQ(moved, 0);
+}
+
+// A part the graph split: the outputs lie on their own side, 2.4 noise deviations from the
+// other, interleaved on the same grid. The band of one deviation keeps the other side out
+// of the reference, so nothing moves; a plain mean of the neighbours would put it on the
+// mid-plane, and the offsets from it would read as two sides (kurtosis 3 - 2 x 1.2^4 /
+// (1.2^2 + 1)^2 = 2.30).
+TEST(SeparateMergedSides, OutputsOnTheirOwnSideStay) {
+  const double sigma = 0.002;
+  Merged m = MergedSheet(1.2 * sigma, sigma, 13);
+  for (size_t i = 0; i < m.outputs.size(); ++i) m.outputs[i].z() = m.side[i];
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  int moved = -1;
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 2, &moved),
+            m.outputs);
+  EXPECT_EQ(moved, 0);
+}
+
+TEST(SidesReference, IsTheMeanHeightOfTheNearestOutputsWithinTheBandByBruteForce) {
+  // A wavy sheet with scattered outputs (no ties in distance), normals tilted about z, some
+  // of them beyond the angle bar; a band that keeps part of the neighbours out.
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> height(0.0, 0.004);
+  energy::PointList outputs, normals;
+  std::vector<int> anchors;
+  for (int i = 0; i < 3000; ++i) {
+    const double x = unit(random), y = unit(random);
+    outputs.emplace_back(x, y, 0.02 * std::sin(6.0 * x) + height(random));
+    const double tilt = (i % 10 == 0 ? 0.6 : 0.15) * (unit(random) - 0.5);
+    normals.push_back(energy::Point3(tilt, 0.0, i % 3 == 0 ? -1.0 : 1.0).normalized());
+    if (i % 7 != 0) anchors.push_back(i);  // the others have no say and stay
+  }
+  const double band = 0.005;
+  const energy::PointList reference = SidesReference(outputs, normals, anchors, band, 2);
+  EXPECT_EQ(SidesReference(outputs, normals, anchors, band, 1), reference);
+  const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
+  int moved = 0;
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    if (i % 7 == 0) {
+      EXPECT_EQ(reference[i], outputs[i]);
+      continue;
+    }
+    if (i % 5 != 0) continue;  // a sample of the anchors
+    std::vector<std::pair<double, int>> by_distance;
+    for (int j : anchors) by_distance.emplace_back((outputs[j] - outputs[i]).squaredNorm(), j);
+    std::sort(by_distance.begin(), by_distance.end());
+    double sum = 0.0;
+    int used = 0;
+    for (int b = 0; b < kSidesReferenceNeighbors; ++b) {
+      const int j = by_distance[b].second;
+      if (std::abs(normals[i].dot(normals[j])) < min_cosine) continue;
+      const double h = normals[i].dot(outputs[j] - outputs[i]);
+      if (std::abs(h) >= band) continue;
+      sum += h;
+      ++used;
+    }
+    ASSERT_GT(used, 0);
+    const energy::Point3 expected = outputs[i] + (sum / used) * normals[i];
+    EXPECT_LT((reference[i] - expected).norm(), 1e-15) << "point " << i;
+    moved += reference[i] != outputs[i];
+  }
+  EXPECT_GT(moved, 300);
+  // No noise estimate: the outputs themselves.
+  EXPECT_EQ(SidesReference(outputs, normals, anchors, 0.0, 2), outputs);
+}
+
 TEST(SeparateMergedSides, FewerPointsThanARegionStay) {
   Merged m = MergedSheet(0.002, 0.002, 7);
   m.inputs.resize(kSidesRegionPoints - 1);
   m.outputs.resize(kSidesRegionPoints - 1);
   m.normals.resize(kSidesRegionPoints - 1);
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2), m.outputs);
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 0.002, 2), m.outputs);
 }
 
 }  // namespace
