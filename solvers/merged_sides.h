@@ -19,9 +19,10 @@
 // as merged where its kurtosis is more than kSidesKurtosisStandardErrors standard errors
 // (sqrt(24 / n) for n Gaussian offsets) under 3: 2.75 at 1,500 points. Regions of one sheet
 // read 2.80-3.10 at their 1% quantile, merged sides 1.9-2.1 deviations apart 2.55-2.75 at
-// their median (the benchmark's meshes and thin parts at 10K and 50K, docs/method.md). The
-// points the final step flags as outliers count in the moments (at their nearest kept
-// output's plane): left out, they would cut the noise's tails and read 2.8 on one sheet.
+// their median (the benchmark's meshes and thin parts at 10K and 50K, offsets from each
+// point's own output, docs/method.md). The points the final step flags as outliers count in
+// the moments (at their nearest kept output's reference plane, below): left out, they would
+// cut the noise's tails and read 2.8 on one sheet.
 #ifndef LPD_SOLVERS_MERGED_SIDES_H_
 #define LPD_SOLVERS_MERGED_SIDES_H_
 
