@@ -282,9 +282,10 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     }
   }
   // Merged sides of a thin part, told apart (merged_sides.h): the solved points, and below
-  // the points of a subsample run's extension, each over their own regions.
+  // the points of a subsample run's extension, each over their own regions. A resumed run
+  // has no noise estimate and skips it.
   const bool separate_sides =
-      options.final_step.separate_merged_sides && SidesMayHaveMerged(estimates);
+      options.final_step.separate_merged_sides && estimates.noise_sigma > 0.0;
   if (separate_sides) {
     result.num_separated =
         SeparateSides(problem.frame, problem.points, result.normals, result.indicators.is_outlier,

@@ -63,7 +63,7 @@ struct FinalDenoisingOptions {
   // kCalibratedReadRatio.
   bool offset_feedback = true;
   // Move each output point of a region whose input offsets read as two merged sides to the
-  // side its offset's sign picks (merged_sides.h; paper: off). Applied where SidesMayHaveMerged.
+  // side its offset's sign picks (merged_sides.h; paper: off).
   bool separate_merged_sides = true;
   double outlier_fraction = 0.65;        // outlier score that makes an outlier, in (0, 1]
   // Largest factor by which a plane's region noise may widen its line process (above; 1:

@@ -100,9 +100,11 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
                                const std::vector<double>& offsets, const std::vector<int>& pool,
                                int num_threads);
 
-// Whether a cloud may have merged sides worth the test: kThinShareForNoWidening or more of
-// the probe's regions nearly split (the evidence that also keeps k from widening,
-// neighborhood_size.h).
+// Whether the probe reads each side's noise of merged sides (neighborhood_size.h):
+// kThinShareForNoWidening or more of its regions nearly split (the evidence that also keeps
+// k from widening). The final step's test runs on every cloud: measured from the reference,
+// one sheet's regions read under the bar by chance only, and the meshes of the learned
+// denoisers' benchmark stay under kMinMergedRegionShare (docs/method.md, "Thin parts").
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates);
 
 // The offsets z are measured from a reference surface, not from each point's own output.
