@@ -88,7 +88,7 @@ void SplitOffUnsolved(const std::vector<int>& solved, const energy::PointList& o
 // frame), the flagged outliers standing; returns how many points moved.
 int SeparateSides(const energy::Frame& frame, const energy::PointList& inputs,
                   const energy::PointList& normals, const std::vector<uint8_t>& is_outlier,
-                  double noise_sigma, int num_threads, energy::PointList* outputs) {
+                  int num_threads, energy::PointList* outputs) {
   energy::PointList normalized(outputs->size());
   std::vector<uint8_t> movable(outputs->size());
   for (size_t i = 0; i < normalized.size(); ++i) {
@@ -97,7 +97,7 @@ int SeparateSides(const energy::Frame& frame, const energy::PointList& inputs,
   }
   int moved = 0;
   const energy::PointList separated =
-      SeparateMergedSides(inputs, normalized, normals, movable, noise_sigma, num_threads, &moved);
+      SeparateMergedSides(inputs, normalized, normals, movable, num_threads, &moved);
   for (size_t i = 0; i < separated.size(); ++i) {
     if (separated[i] != normalized[i]) (*outputs)[i] = frame.ToInput(separated[i]);
   }
@@ -283,13 +283,13 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   }
   // Merged sides of a thin part, told apart (merged_sides.h): the solved points, and below
   // the points of a subsample run's extension, each over their own regions. A resumed run
-  // has no noise estimate and skips it.
+  // keeps no estimates and skips it, as it skips the feedback.
   const bool separate_sides =
       options.final_step.separate_merged_sides && estimates.noise_sigma > 0.0;
   if (separate_sides) {
     result.num_separated =
         SeparateSides(problem.frame, problem.points, result.normals, result.indicators.is_outlier,
-                      estimates.noise_sigma, options.settings.num_threads, &result.projected);
+                      options.settings.num_threads, &result.projected);
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
@@ -319,9 +319,9 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       for (size_t q = 0; q < inputs.size(); ++q) {
         inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
       }
-      result.num_separated += SeparateSides(problem.frame, inputs, extended_normals,
-                                            extended.is_outlier, estimates.noise_sigma,
-                                            options.settings.num_threads, &extended_points);
+      result.num_separated +=
+          SeparateSides(problem.frame, inputs, extended_normals, extended.is_outlier,
+                        options.settings.num_threads, &extended_points);
     }
   }
   const std::vector<int>& left_out = state.left_out;

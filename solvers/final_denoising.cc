@@ -90,7 +90,7 @@ PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy:
       values[a] = std::abs(PlaneResidual(v, j, q));
       radius[j] = std::max(radius[j], (q - problem.points[j]).norm());
     }
-    scale[j] = std::max(1.4826 * Median(&values), problem.quantization_noise);
+    scale[j] = std::max(kMedianAbsToSigma * Median(&values), problem.quantization_noise);
   }
   for (int j = 0; j < n; ++j) {
     for (int a = 0; a < columns; ++a) values[a] = scale[graph.FittingPoint(j, a)];

@@ -7,6 +7,10 @@
 
 namespace lpd::solvers {
 
+// The deviation of Gaussian values over the median of their magnitudes: sigma =
+// kMedianAbsToSigma median |x| (1 / Phi^-1(3/4)), robust to a minority of outliers.
+constexpr double kMedianAbsToSigma = 1.4826;
+
 // The median of `values` (the upper one for an even count), found by partial sorting:
 // `values` is reordered. It must not be empty.
 inline double Median(std::vector<double>* values) {

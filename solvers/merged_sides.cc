@@ -120,13 +120,23 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
   return regions;
 }
 
+double OffsetDeviation(const energy::PointList& inputs, const energy::PointList& outputs,
+                       const energy::PointList& normals, const std::vector<int>& anchors) {
+  if (anchors.empty()) return 0.0;
+  std::vector<double> magnitudes(anchors.size());
+  for (size_t r = 0; r < anchors.size(); ++r) {
+    const int i = anchors[r];
+    magnitudes[r] = std::abs(normals[i].dot(inputs[i] - outputs[i]));
+  }
+  return kMedianAbsToSigma * Median(&magnitudes);
+}
+
 energy::PointList SidesReference(const energy::PointList& outputs,
                                  const energy::PointList& normals,
-                                 const std::vector<int>& anchors, double noise_sigma,
-                                 int num_threads) {
+                                 const std::vector<int>& anchors, double band, int num_threads) {
   energy::PointList reference = outputs;
   const int count = static_cast<int>(anchors.size());
-  if (!(noise_sigma > 0.0) || count < 2) return reference;
+  if (!(band > 0.0) || count < 2) return reference;
   energy::PointList anchor_points(count);
   for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
   const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
@@ -141,7 +151,7 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                    for (int b = 0; b < found; ++b) {
                      if (std::abs(n.dot(normals[anchors[nearest[b]]])) < min_cosine) continue;
                      const double height = n.dot(anchor_points[nearest[b]] - outputs[i]);
-                     if (!(std::abs(height) < noise_sigma)) continue;
+                     if (!(std::abs(height) < band)) continue;
                      sum += height;
                      ++used;
                    }
@@ -153,8 +163,8 @@ energy::PointList SidesReference(const energy::PointList& outputs,
 energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                                       const energy::PointList& outputs,
                                       const energy::PointList& normals,
-                                      const std::vector<uint8_t>& movable, double noise_sigma,
-                                      int num_threads, int* moved) {
+                                      const std::vector<uint8_t>& movable, int num_threads,
+                                      int* moved) {
   if (moved) *moved = 0;
   energy::PointList result = outputs;
   std::vector<int> anchors;  // the movable points with a normal
@@ -181,8 +191,9 @@ energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                             anchor_of[others[r]] = anchors[nearest[0]];
                           });
   }
-  const energy::PointList reference =
-      SidesReference(outputs, normals, anchors, noise_sigma, num_threads);
+  const double band =
+      kSidesReferenceBandDeviations * OffsetDeviation(inputs, outputs, normals, anchors);
+  const energy::PointList reference = SidesReference(outputs, normals, anchors, band, num_threads);
   energy::PointList positions(n);
   std::vector<double> offset(n);
   for (int i = 0; i < n; ++i) {

@@ -89,8 +89,8 @@ std::vector<double> SideResiduals(const energy::PointList& normalized,
     const int r = region_of[query];
     if (r < 0 || split_probe[query] || !(regions.median_abs_offset[r] > 0.0)) continue;
     // 1.4826 median |z| = s.
-    const double scale =
-        std::sqrt(regions.sides[r].sigma_squared) / (1.4826 * regions.median_abs_offset[r]);
+    const double scale = std::sqrt(regions.sides[r].sigma_squared) /
+                         (kMedianAbsToSigma * regions.median_abs_offset[r]);
     const size_t row = static_cast<size_t>(query) * (k + 1);
     for (int a = 0; a <= k; ++a) scaled[row + a] *= scale;
   }
@@ -104,7 +104,8 @@ double NoiseFromResiduals(std::vector<double> residuals, int k, double floor) {
   residuals.erase(std::remove_if(residuals.begin(), residuals.end(),
                                  [](double r) { return std::isnan(r); }),
                   residuals.end());
-  return std::max(1.4826 * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0)), floor);
+  return std::max(kMedianAbsToSigma * Median(&residuals) * std::sqrt((k + 1.0) / (k - 2.0)),
+                  floor);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "energy/fitting_term.h"
 #include "energy/plane_projection.h"
 #include "energy/smoothness_term.h"
+#include "solvers/median.h"
 
 namespace lpd::solvers {
 
@@ -56,7 +57,7 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
   }
   const auto middle = magnitudes.begin() + magnitudes.size() / 2;
   std::nth_element(magnitudes.begin(), middle, magnitudes.end());
-  return std::max(1.4826 * *middle, problem.quantization_noise);
+  return std::max(kMedianAbsToSigma * *middle, problem.quantization_noise);
 }
 
 double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,

@@ -2,11 +2,11 @@
 // recovered from a two-Gaussian mixture's moments, flat-topped noise and well-apart sides not
 // taken; points over sides two noise deviations apart, moved to the side their offset's sign
 // picks, come out on a side and closer to their own than the input and the mid-plane, also
-// where the outputs follow their inputs part way, while outputs on their own side stay; the
-// reference surface against brute force; one
-// Gaussian sheet does not move, also with its farthest points flagged as outliers; the
-// regions' moments and medians against brute-force nearest points, and their growth from
-// seeds through neighbouring regions between the two bars.
+// where the outputs follow their inputs part way or lie on two layers closer than the sides,
+// while outputs on their own side stay; the reference surface and the offsets' deviation
+// against brute force; one Gaussian sheet does not move, also with its farthest points
+// flagged as outliers; the regions' moments and medians against brute-force nearest points,
+// and their growth from seeds through neighbouring regions between the two bars.
 #include "solvers/merged_sides.h"
 
 #include <algorithm>
@@ -14,6 +14,8 @@
 #include <random>
 
 #include <gtest/gtest.h>
+
+#include "solvers/median.h"
 
 namespace lpd::solvers {
 namespace {
@@ -85,7 +87,7 @@ TEST(SeparateMergedSides, PointsOverSidesTwoDeviationsApartMoveToTheirSide) {
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   int moved = 0;
   const energy::PointList separated =
-      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 2, &moved);
+      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved);
   EXPECT_EQ(moved, static_cast<int>(m.outputs.size()));
   // Closed forms: the input is sigma sqrt(2 / pi) = 0.80 sigma from its side, the mid-plane
   // sigma; a point at the side its sign picks 2 sigma Phi(-1) = 0.32 sigma, with the side's
@@ -100,7 +102,7 @@ TEST(SeparateMergedSides, PointsOverSidesTwoDeviationsApartMoveToTheirSide) {
   for (const energy::Point3& p : separated) to_nearer_side += std::abs(std::abs(p.z()) - sigma);
   EXPECT_LT(to_nearer_side / separated.size(), 0.1 * sigma);
   // Only along the normal; the same for any thread count.
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 1), separated);
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 1), separated);
   for (size_t i = 0; i < separated.size(); ++i) {
     EXPECT_EQ(separated[i].x(), m.outputs[i].x());
     EXPECT_EQ(separated[i].y(), m.outputs[i].y());
@@ -112,7 +114,7 @@ TEST(SeparateMergedSides, PointsOverSidesTwoDeviationsApartMoveToTheirSide) {
 void ExpectOneSheetStays(const Merged& m, const std::vector<uint8_t>& movable) {
   int moved = -1;
   const energy::PointList separated =
-      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 0.002, 2, &moved);
+      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved);
   double shift = 0.0;
   for (size_t i = 0; i < separated.size(); ++i) shift += std::abs(separated[i].z());
   EXPECT_LT(moved, 0.05 * m.outputs.size());
@@ -261,21 +263,17 @@ TEST(SeparateMergedSides, OutputsFollowingTheirInputsPartWayAreStillSeparated) {
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   int moved = 0;
   const energy::PointList separated =
-      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 2, &moved);
+      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved);
   EXPECT_GT(moved, 0.9 * m.outputs.size());
   // Nearer their own side than the input (0.80 sigma) and these outputs (0.70 sigma): 0.48
   // sigma, against 0.32 for outputs on the mid-plane (PointsOverSidesTwoDeviationsApart...),
   // as the band around each output keeps its reference part way towards it.
   EXPECT_LT(MeanDistanceToSide(separated, m.side), 0.55 * sigma);
   EXPECT_GT(MeanDistanceToSide(m.outputs, m.side), 0.65 * sigma);
-  // Measured from the outputs themselves (no noise estimate, no reference), they stay.
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 0.0, 2, &moved),
-            m.outputs);
-  EXPECT_EQ(moved, 0);
 }
 
 // A part the graph split: the outputs lie on their own side, 2.4 noise deviations from the
-// other, interleaved on the same grid. The band of one deviation keeps the other side out
+// other, interleaved on the same grid. The band of two deviations keeps the other side out
 // of the reference, so nothing moves; a plain mean of the neighbours would put it on the
 // mid-plane, and the offsets from it would read as two sides (kurtosis 3 - 2 x 1.2^4 /
 // (1.2^2 + 1)^2 = 2.30).
@@ -285,9 +283,65 @@ TEST(SeparateMergedSides, OutputsOnTheirOwnSideStay) {
   for (size_t i = 0; i < m.outputs.size(); ++i) m.outputs[i].z() = m.side[i];
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   int moved = -1;
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, sigma, 2, &moved),
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved),
             m.outputs);
   EXPECT_EQ(moved, 0);
+}
+
+// A part split in places: each output lies on a layer 0.7 deviations out on the side its
+// input's sign picks, 1.4 deviations from the other layer, short of the sides 2 deviations
+// apart. A band of one deviation would take each layer for a side of its own, and nothing
+// would move (the offsets from it read as one sheet); the band of two deviations of the
+// offsets from the outputs (here about 0.8 deviations: a band of 1.6) spans both layers.
+TEST(SeparateMergedSides, OutputsOnTwoLayersCloserThanTheSidesAreSeparated) {
+  const double sigma = 0.002;
+  Merged m = MergedSheet(sigma, sigma, 19);
+  for (size_t i = 0; i < m.outputs.size(); ++i) {
+    m.outputs[i].z() = (m.inputs[i].z() >= 0.0 ? 0.7 : -0.7) * sigma;
+  }
+  std::vector<int> all(m.outputs.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  EXPECT_GT(kSidesReferenceBandDeviations * OffsetDeviation(m.inputs, m.outputs, m.normals, all),
+            1.4 * sigma);
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  int moved = 0;
+  const energy::PointList separated =
+      SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved);
+  EXPECT_GT(moved, 0.9 * m.outputs.size());
+  // The layers are 0.3 deviations from the side for the 84% whose sign is right and 1.7 for
+  // the others (0.52 in all); on the sides, 2 Phi(-1) = 0.32, as for outputs on the mid-plane.
+  EXPECT_GT(MeanDistanceToSide(m.outputs, m.side), 0.45 * sigma);
+  EXPECT_LT(MeanDistanceToSide(separated, m.side), 0.4 * sigma);
+}
+
+TEST(OffsetDeviation, IsTheScaledMedianOffsetAlongTheNormalOverTheAnchorsByBruteForce) {
+  // Offsets of deviation 0.003 along tilted normals, with in-plane slips that must not count;
+  // the points that are not anchors have offsets 100 times larger.
+  std::mt19937_64 random(23);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const double sigma = 0.003;
+  energy::PointList inputs, outputs, normals;
+  std::vector<int> anchors;
+  std::vector<double> magnitudes;
+  for (int i = 0; i < 4001; ++i) {
+    const energy::Point3 n = energy::Point3(gauss(random), gauss(random), 3.0).normalized();
+    const energy::Point3 slip(gauss(random), gauss(random), gauss(random));
+    const energy::Point3 along_plane = 0.01 * (slip - slip.dot(n) * n);
+    const bool anchor = i % 4 != 0;
+    const double offset = (anchor ? 1.0 : 100.0) * sigma * gauss(random);
+    outputs.emplace_back(0.001 * i, 0.0, 0.0);
+    normals.push_back(n);
+    inputs.push_back(outputs.back() + offset * n + along_plane);
+    if (anchor) {
+      anchors.push_back(i);
+      magnitudes.push_back(std::abs(offset));
+    }
+  }
+  std::sort(magnitudes.begin(), magnitudes.end());
+  const double deviation = OffsetDeviation(inputs, outputs, normals, anchors);
+  EXPECT_NEAR(deviation, kMedianAbsToSigma * magnitudes[magnitudes.size() / 2], 1e-12);
+  EXPECT_NEAR(deviation, sigma, 0.05 * sigma);
+  EXPECT_EQ(OffsetDeviation(inputs, outputs, normals, {}), 0.0);
 }
 
 TEST(SidesReference, IsTheMeanHeightOfTheNearestOutputsWithinTheBandByBruteForce) {
@@ -345,7 +399,7 @@ TEST(SeparateMergedSides, FewerPointsThanARegionStay) {
   m.outputs.resize(kSidesRegionPoints - 1);
   m.normals.resize(kSidesRegionPoints - 1);
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 0.002, 2), m.outputs);
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2), m.outputs);
 }
 
 }  // namespace
