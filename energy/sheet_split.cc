@@ -51,20 +51,22 @@ void RunNormals(const std::vector<Point3>& points, const std::vector<double>& of
   }
 }
 
-// The footprint difference of the split's two runs (sheet_split.h): the runs' means and
-// covariances within the plane (each point's offset along the normal, offsets[a], taken off).
+}  // namespace
+
 double FootprintDifference(const std::vector<Point3>& points, const std::vector<double>& offsets,
-                           const SheetSplit& split) {
+                           const Eigen::Vector3d& normal, const Eigen::Vector3d& origin,
+                           double threshold) {
   Eigen::Vector3d sum[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   Eigen::Matrix3d moment[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   int size[2] = {0, 0};
   for (size_t a = 0; a < offsets.size(); ++a) {
-    const Eigen::Vector3d in_plane = points[a] - split.mean - offsets[a] * split.normal;
-    const int side = split.Side(offsets[a]);
+    const Eigen::Vector3d in_plane = points[a] - origin - offsets[a] * normal;
+    const int side = offsets[a] < threshold ? 0 : 1;
     sum[side] += in_plane;
     moment[side] += in_plane * in_plane.transpose();
     ++size[side];
   }
+  if (size[0] == 0 || size[1] == 0) return 0.0;
   Eigen::Vector3d mean[2];
   Eigen::Matrix3d covariance[2];
   for (int side = 0; side < 2; ++side) {
@@ -76,7 +78,34 @@ double FootprintDifference(const std::vector<Point3>& points, const std::vector<
   return ((covariance[0] - covariance[1]).norm() + (mean[0] - mean[1]).squaredNorm()) / spread;
 }
 
-}  // namespace
+int BestLowerRun(const std::vector<double>& sorted, int min_run, double* within) {
+  const int count = static_cast<int>(sorted.size());
+  double sum = 0.0, squares = 0.0;
+  for (double o : sorted) {
+    sum += o;
+    squares += o * o;
+  }
+  // Prefix sums over the lower run, which holds min_run or more.
+  double best = squares - sum * sum / count, lower_sum = 0.0, lower_squares = 0.0;
+  for (int a = 0; a < min_run - 1; ++a) {
+    lower_sum += sorted[a];
+    lower_squares += sorted[a] * sorted[a];
+  }
+  int best_size = 0;
+  for (int m = min_run; m <= count - min_run; ++m) {
+    lower_sum += sorted[m - 1];
+    lower_squares += sorted[m - 1] * sorted[m - 1];
+    const double upper_sum = sum - lower_sum, upper_squares = squares - lower_squares;
+    const double run_squares = lower_squares - lower_sum * lower_sum / m + upper_squares -
+                               upper_sum * upper_sum / (count - m);
+    if (run_squares < best) {
+      best = run_squares;
+      best_size = m;
+    }
+  }
+  *within = best;
+  return best_size;
+}
 
 SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   SheetSplit split;
@@ -91,33 +120,14 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   for (int a = 0; a < count; ++a) offsets[a] = split.Offset(local[a]);
   sorted = offsets;
   std::sort(sorted.begin(), sorted.end());
-  double sum = 0.0, squares = 0.0;
-  for (double o : sorted) {
-    sum += o;
-    squares += o * o;
-  }
-  // Prefix sums over the lower run, which holds kMinSheetPoints or more.
-  double best = squares - sum * sum / count, lower_sum = 0.0, lower_squares = 0.0;
-  for (int a = 0; a < kMinSheetPoints - 1; ++a) {
-    lower_sum += sorted[a];
-    lower_squares += sorted[a] * sorted[a];
-  }
-  int best_size = 0;
-  for (int m = kMinSheetPoints; m <= count - kMinSheetPoints; ++m) {
-    lower_sum += sorted[m - 1];
-    lower_squares += sorted[m - 1] * sorted[m - 1];
-    const double upper_sum = sum - lower_sum, upper_squares = squares - lower_squares;
-    const double within = lower_squares - lower_sum * lower_sum / m + upper_squares -
-                          upper_sum * upper_sum / (count - m);
-    if (within < best) {
-      best = within;
-      best_size = m;
-    }
-  }
+  double best = 0.0;
+  const int best_size = BestLowerRun(sorted, kMinSheetPoints, &best);
   if (best_size == 0 || !(best > 0.0)) return split;
   split.threshold = 0.5 * (sorted[best_size - 1] + sorted[best_size]);
   double lower = 0.0;
   for (int a = 0; a < best_size; ++a) lower += sorted[a];
+  double sum = 0.0;
+  for (double o : sorted) sum += o;
   split.lower_mean = lower / best_size;
   split.upper_mean = (sum - lower) / (count - best_size);
   const double within_deviation = std::sqrt(best / (count - 2));
@@ -138,7 +148,8 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
     }
   }
   split.separation = (split.upper_mean - split.lower_mean) / within_deviation;
-  split.footprint_difference = FootprintDifference(local, offsets, split);
+  split.footprint_difference =
+      FootprintDifference(local, offsets, split.normal, split.mean, split.threshold);
   return split;
 }
 

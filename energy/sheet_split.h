@@ -57,6 +57,8 @@
 #ifndef LPD_ENERGY_SHEET_SPLIT_H_
 #define LPD_ENERGY_SHEET_SPLIT_H_
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "energy/point3.h"
@@ -101,6 +103,18 @@ struct SheetSplit {
 
 // The split of points[members[0 .. count)] (count >= 2 kMinSheetPoints, else separation 0).
 SheetSplit SplitSheets(const PointList& points, const int* members, int count);
+
+// The exact one-dimensional 2-means of `sorted` (ascending): the size of the lower run, from
+// min_run to size - min_run, whose two runs have the least sum of squared offsets from their
+// own means (in *within); 0 where no split lowers it under the whole list's.
+int BestLowerRun(const std::vector<double>& sorted, int min_run, double* within);
+
+// The footprint difference (above) of the runs offsets[a] < threshold and >= threshold, with
+// offsets[a] the offset of points[a] along the unit `normal` from `origin`; 0 where a run is
+// empty or the points do not spread within the plane.
+double FootprintDifference(const std::vector<Point3>& points, const std::vector<double>& offsets,
+                           const Eigen::Vector3d& normal, const Eigen::Vector3d& origin,
+                           double threshold);
 
 // The evidence for two sides over a region: its neighbourhoods' splits, averaged.
 class RegionSplits {

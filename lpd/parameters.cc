@@ -427,7 +427,8 @@ std::vector<Parameter> FinalStepParameters() {
             "sides of a thin part merged into one (kurtosis under 2.75 over 1,500 points), move "
             "each output point to the side its offset's sign picks; only where a tenth or more "
             "of these regions read as merged (where a fifth do, neighbouring regions under 2.87 "
-            "join them)",
+            "join them); and where the noise reads wider than 1.15 spacings, move outputs left "
+            "between two output layers onto the layer nearer their input",
             "", "false"},
            [](O& o) -> bool& { return o.final_step.separate_merged_sides; }),
       Number("outlier_fraction", kBoth,

@@ -12,6 +12,7 @@
 #include "solvers/duplicate_points.h"
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
+#include "solvers/between_layers.h"
 #include "solvers/merged_sides.h"
 #include "solvers/near_repeats.h"
 #include "solvers/offset_feedback.h"
@@ -84,24 +85,29 @@ void SplitOffUnsolved(const std::vector<int>& solved, const energy::PointList& o
   state->order = std::move(solved_order);
 }
 
-// SeparateMergedSides on `outputs` (input frame, moved in place) of `inputs` (normalized
-// frame), the flagged outliers standing; returns how many points moved.
+// SeparateMergedSides, then (with `between_layers`) MoveBetweenLayerPointsOntoLayers, on
+// `outputs` (input frame, moved in place) of `inputs` (normalized frame), the flagged outliers
+// standing; returns how many points moved.
 int SeparateSides(const energy::Frame& frame, const energy::PointList& inputs,
                   const energy::PointList& normals, const std::vector<uint8_t>& is_outlier,
-                  int num_threads, energy::PointList* outputs) {
+                  bool between_layers, int num_threads, energy::PointList* outputs) {
   energy::PointList normalized(outputs->size());
   std::vector<uint8_t> movable(outputs->size());
   for (size_t i = 0; i < normalized.size(); ++i) {
     normalized[i] = frame.ToNormalized((*outputs)[i]);
     movable[i] = !is_outlier[i];
   }
-  int moved = 0;
+  int merged = 0, between = 0;
   const energy::PointList separated =
-      SeparateMergedSides(inputs, normalized, normals, movable, num_threads, &moved);
-  for (size_t i = 0; i < separated.size(); ++i) {
-    if (separated[i] != normalized[i]) (*outputs)[i] = frame.ToInput(separated[i]);
+      SeparateMergedSides(inputs, normalized, normals, movable, num_threads, &merged);
+  const energy::PointList layered =
+      between_layers ? MoveBetweenLayerPointsOntoLayers(inputs, separated, normals, movable,
+                                                        num_threads, &between)
+                     : separated;
+  for (size_t i = 0; i < layered.size(); ++i) {
+    if (layered[i] != normalized[i]) (*outputs)[i] = frame.ToInput(layered[i]);
   }
-  return moved;
+  return merged + between;
 }
 
 }  // namespace
@@ -286,10 +292,14 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   // keeps no estimates and skips it, as it skips the feedback.
   const bool separate_sides =
       options.final_step.separate_merged_sides && estimates.noise_sigma > 0.0;
+  // Points left between two sides, where the probe reads the noise wider than the spacing
+  // (between_layers.h).
+  const bool between_layers = estimates.spacing > 0.0 &&
+                              estimates.read_sigma > kCalibratedReadRatio * estimates.spacing;
   if (separate_sides) {
     result.num_separated =
         SeparateSides(problem.frame, problem.points, result.normals, result.indicators.is_outlier,
-                      options.settings.num_threads, &result.projected);
+                      between_layers, options.settings.num_threads, &result.projected);
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
@@ -321,7 +331,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       }
       result.num_separated +=
           SeparateSides(problem.frame, inputs, extended_normals, extended.is_outlier,
-                        options.settings.num_threads, &extended_points);
+                        between_layers, options.settings.num_threads, &extended_points);
     }
   }
   const std::vector<int>& left_out = state.left_out;

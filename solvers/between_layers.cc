@@ -1,0 +1,159 @@
+#include "solvers/between_layers.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+#include "energy/nearest_neighbors.h"
+#include "energy/sheet_split.h"
+#include "solvers/median.h"
+#include "solvers/merged_sides.h"
+
+namespace lpd::solvers {
+namespace {
+
+// The median of sorted[begin, end) and kMedianAbsToSigma times the median absolute
+// deviation about it.
+void RobustSpread(const std::vector<double>& sorted, int begin, int end, double* median,
+                  double* deviation) {
+  *median = sorted[begin + (end - begin) / 2];
+  thread_local std::vector<double> distances;
+  distances.resize(end - begin);
+  for (int a = begin; a < end; ++a) distances[a - begin] = std::abs(sorted[a] - *median);
+  *deviation = kMedianAbsToSigma * Median(&distances);
+}
+
+// Two layers read around a centre: heights along `normal` from `origin`.
+struct Layers {
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  energy::Point3 origin = energy::Point3::Zero();
+  double median[2] = {0.0, 0.0};
+  double spread[2] = {0.0, 0.0};  // robust deviations
+  double gap = 0.0;
+  bool found = false;
+};
+
+// The layers of the outputs `nearest[0, found)` around `origin` (between_layers.h).
+Layers ReadLayers(const energy::PointList& outputs, const energy::PointList& normals,
+                  const int* nearest, int found, const energy::Point3& origin,
+                  double deviation) {
+  Layers layers;
+  layers.origin = origin;
+  Eigen::Matrix3d normal_moment = Eigen::Matrix3d::Zero();
+  for (int b = 0; b < found; ++b) {
+    const energy::Point3& n = normals[nearest[b]];
+    normal_moment += n * n.transpose();
+  }
+  layers.normal =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_moment).eigenvectors().col(2);
+  thread_local std::vector<energy::Point3> local;
+  thread_local std::vector<double> heights, sorted;
+  local.resize(found);
+  heights.resize(found);
+  for (int b = 0; b < found; ++b) {
+    local[b] = outputs[nearest[b]];
+    heights[b] = layers.normal.dot(local[b] - origin);
+  }
+  sorted = heights;
+  std::sort(sorted.begin(), sorted.end());
+  const int min_run = std::max(1, static_cast<int>(std::ceil(kMinLayerShare * found)));
+  double within = 0.0;
+  const int lower_size = energy::BestLowerRun(sorted, min_run, &within);
+  if (lower_size == 0 || !(within > 0.0)) return layers;
+  double lower_sum = 0.0, sum = 0.0;
+  for (int a = 0; a < found; ++a) {
+    sum += sorted[a];
+    if (a < lower_size) lower_sum += sorted[a];
+  }
+  layers.gap = (sum - lower_sum) / (found - lower_size) - lower_sum / lower_size;
+  if (!(layers.gap > kMinLayerGapDeviations * deviation &&
+        layers.gap < kMaxLayerGapDeviations * deviation)) {
+    return layers;
+  }
+  if (!(layers.gap > kMinLayerSeparation * std::sqrt(within / found))) return layers;
+  const double threshold = 0.5 * (sorted[lower_size - 1] + sorted[lower_size]);
+  if (!(energy::FootprintDifference(local, heights, layers.normal, origin, threshold) <
+        kMaxLayerFootprintDifference)) {
+    return layers;
+  }
+  RobustSpread(sorted, 0, lower_size, &layers.median[0], &layers.spread[0]);
+  RobustSpread(sorted, lower_size, found, &layers.median[1], &layers.spread[1]);
+  layers.found = true;
+  return layers;
+}
+
+// The height along layers.normal by which the output o (input p) moves onto the layer nearer
+// to p, where o lies between the two layers; false where it does not.
+bool MoveOntoLayer(const Layers& layers, const energy::Point3& o, const energy::Point3& p,
+                   double* move) {
+  const double height = layers.normal.dot(o - layers.origin);
+  const double off[2] = {layers.median[0] - height, layers.median[1] - height};
+  const int nearer = std::abs(off[0]) < std::abs(off[1]) ? 0 : 1;
+  if (!(std::abs(off[nearer]) >
+        std::max(kBetweenLayerSpreads * layers.spread[nearer], kBetweenLayerGapShare * layers.gap))) {
+    return false;
+  }
+  const double input_height = layers.normal.dot(p - layers.origin);
+  const int side = std::abs(input_height - layers.median[0]) <
+                           std::abs(input_height - layers.median[1])
+                       ? 0
+                       : 1;
+  *move = off[side];
+  return true;
+}
+
+}  // namespace
+
+energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inputs,
+                                                   const energy::PointList& outputs,
+                                                   const energy::PointList& normals,
+                                                   const std::vector<uint8_t>& movable,
+                                                   int num_threads, int* moved) {
+  if (moved) *moved = 0;
+  energy::PointList result = outputs;
+  std::vector<int> anchors;
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    if (movable[i] && normals[i].squaredNorm() > 0.0) anchors.push_back(static_cast<int>(i));
+  }
+  const int count = static_cast<int>(anchors.size());
+  if (count < kLayerNeighbors) return result;
+  const double deviation = OffsetDeviation(inputs, outputs, normals, anchors);
+  if (!(deviation > 0.0)) return result;
+  energy::PointList anchor_points(count);
+  for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
+  // The layers around every kLayerCentreStride-th anchor.
+  std::vector<int> centres;
+  for (int r = 0; r < count; r += kLayerCentreStride) centres.push_back(r);
+  const int num_centres = static_cast<int>(centres.size());
+  energy::PointList centre_points(num_centres);
+  for (int c = 0; c < num_centres; ++c) centre_points[c] = anchor_points[centres[c]];
+  std::vector<Layers> layers(num_centres);
+  const energy::NearestNeighbors search(anchor_points);
+  search.ForEach(num_centres, kLayerNeighbors, num_threads,
+                 [&](int c) { return centre_points[c]; },
+                 [&](int c, const int* nearest, const double*, int found) {
+                   thread_local std::vector<int> neighbors;
+                   neighbors.resize(found);
+                   for (int b = 0; b < found; ++b) neighbors[b] = anchors[nearest[b]];
+                   layers[c] = ReadLayers(outputs, normals, neighbors.data(), found,
+                                          centre_points[c], deviation);
+                 });
+  // Each anchor against the layers of its nearest centre.
+  std::vector<uint8_t> moves(count, 0);
+  const energy::NearestNeighbors centre_search(centre_points);
+  centre_search.ForEach(count, 1, num_threads, [&](int r) { return anchor_points[r]; },
+                        [&](int r, const int* nearest, const double*, int) {
+                          const Layers& around = layers[nearest[0]];
+                          const int i = anchors[r];
+                          double move = 0.0;
+                          if (around.found && MoveOntoLayer(around, outputs[i], inputs[i], &move)) {
+                            result[i] = outputs[i] + move * around.normal;
+                            moves[r] = 1;
+                          }
+                        });
+  if (moved) *moved = static_cast<int>(std::count(moves.begin(), moves.end(), 1));
+  return result;
+}
+
+}  // namespace lpd::solvers

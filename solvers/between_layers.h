@@ -1,0 +1,67 @@
+// lpd: points that the solve left between the two output layers of a thin part, put on the
+// layer their input is nearer to.
+//
+// Where the graph splits a thin part by side (energy/sheet_split.h), most outputs come out on
+// the two sides, but points whose neighbourhood was not split fit a surface across both and
+// land in between: on a plate 2.8 noise deviations thick at 50K points and 3% noise, a fifth
+// of the points lie more than a sixth of the gap from either side (CD / P2M x 1e4 2.54 /
+// 2.37; put on the side their input's sign picks, 0.90 / 0.74; by this step 1.44 / 1.28;
+// docs/method.md, "Points between two layers"). At 50K the nearest hundred outputs of a point on one side barely
+// reach the other, so the layers are read over kLayerNeighbors outputs.
+//
+// Around each output o (unit normal n), its kLayerNeighbors nearest outputs o_j (normals n_j)
+// give a layer normal c, the dominant eigenvector of sum n_j n_j^T (turned towards n), and
+// heights h_j = c.(o_j - o). Their exact 2-means split (runs of kMinLayerShare of the points
+// or more) reads as two layers where
+//   - the runs' means are kMinLayerGapDeviations to kMaxLayerGapDeviations deviations of the
+//     inputs' offsets from their outputs apart (OffsetDeviation, merged_sides.h): the sides
+//     the split takes apart (2.8 deviations and up) but whose points it leaves between; far
+//     wider gaps are one sheet's middle and rim at noise far under the spacing;
+//   - the separation (gap over the pooled within-run deviation) passes kMinLayerSeparation
+//     (a uniform spread splits at 3.46, one Gaussian sheet at about 2.7);
+//   - the footprint difference is under kMaxLayerFootprintDifference (sheet_split.h: two sides
+//     cover the same footprint, a curved patch's middle and rim do not).
+// The output lies between them where its height, 0, is more than kBetweenLayerSpreads robust
+// deviations (1.4826 median absolute deviation about the median) of the nearer run from that
+// run's median, and more than kBetweenLayerGapShare of the gap. It then moves along c to the
+// median of the run nearer to its input's height c.(p - o).
+//
+// The final step runs it where the probe reads the noise wider than kCalibratedReadRatio
+// spacings (neighborhood_size.h), where the split leaves such points: at 10K points and 2%
+// the 400 nearest span curved parts, and cheburashka came out at P2M 1.12 instead of 1.00.
+#ifndef LPD_SOLVERS_BETWEEN_LAYERS_H_
+#define LPD_SOLVERS_BETWEEN_LAYERS_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "energy/point3.h"
+
+namespace lpd::solvers {
+
+constexpr int kLayerNeighbors = 400;
+// The layers are read around every kLayerCentreStride-th output; each output is tested
+// against those of its nearest centre.
+constexpr int kLayerCentreStride = 8;
+constexpr double kMinLayerShare = 0.15;
+constexpr double kMinLayerGapDeviations = 2.0;
+constexpr double kMaxLayerGapDeviations = 5.0;
+constexpr double kMinLayerSeparation = 4.0;
+constexpr double kMaxLayerFootprintDifference = 0.5;
+constexpr double kBetweenLayerSpreads = 1.5;
+constexpr double kBetweenLayerGapShare = 0.2;
+
+// `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
+// movable output with a normal that lies between two layers (above) moved onto the layer
+// nearer to its input. The layers are read from the movable outputs with a normal (the
+// anchors), all before any moves. Unchanged where fewer than kLayerNeighbors anchors take part.
+// `moved` (optional): how many points moved. Deterministic for any thread count.
+energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inputs,
+                                                   const energy::PointList& outputs,
+                                                   const energy::PointList& normals,
+                                                   const std::vector<uint8_t>& movable,
+                                                   int num_threads, int* moved = nullptr);
+
+}  // namespace lpd::solvers
+
+#endif  // LPD_SOLVERS_BETWEEN_LAYERS_H_

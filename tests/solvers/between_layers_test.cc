@@ -1,0 +1,117 @@
+// Points left between two output layers against their known sides: outputs between two layers
+// three noise deviations apart move onto a layer, most onto their own; points on a layer, one
+// flat sheet with the residual of a denoised output, and a curved cap sampled far finer than
+// its curvature do not move; the result does not depend on the thread count.
+#include "solvers/between_layers.h"
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+namespace lpd::solvers {
+namespace {
+
+// Two layers z = +-half_gap on a 60 x 60 grid each (spacing 0.01, interleaved), inputs at
+// their side + noise of deviation sigma; every fifth point's output lies between the layers,
+// uniform in height over the middle 60% of the gap, the others on their side.
+struct Layered {
+  energy::PointList inputs, outputs, normals;
+  std::vector<double> side;
+  std::vector<uint8_t> between;
+};
+
+Layered TwoLayers(double half_gap, double sigma, uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::uniform_real_distribution<double> middle(-0.6 * half_gap, 0.6 * half_gap);
+  Layered m;
+  int index = 0;
+  for (int a = 0; a < 60; ++a) {
+    for (int b = 0; b < 60; ++b) {
+      for (const double side : {-half_gap, half_gap}) {
+        const double x = 0.01 * a + (side > 0.0 ? 0.005 : 0.0), y = 0.01 * b;
+        const bool between = index++ % 5 == 0;
+        m.side.push_back(side);
+        m.between.push_back(between);
+        m.inputs.emplace_back(x, y, side + noise(random));
+        m.outputs.emplace_back(x, y, between ? middle(random) : side);
+        m.normals.emplace_back(0.0, 0.0, side > 0.0 ? 1.0 : -1.0);
+      }
+    }
+  }
+  return m;
+}
+
+TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenTwoLayersMoveOntoALayerMostlyTheirOwn) {
+  const double sigma = 0.01;
+  const Layered m = TwoLayers(1.5 * sigma, sigma, 5);
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  int moved = 0;
+  const energy::PointList result =
+      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 2, &moved);
+  EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 1),
+            result);
+  int between = 0, on_a_layer = 0, on_own = 0;
+  for (size_t i = 0; i < result.size(); ++i) {
+    EXPECT_EQ(result[i].x(), m.outputs[i].x());
+    EXPECT_EQ(result[i].y(), m.outputs[i].y());
+    if (!m.between[i]) {
+      EXPECT_EQ(result[i], m.outputs[i]) << "a point on its layer moved: " << i;
+      continue;
+    }
+    ++between;
+    on_a_layer += std::abs(std::abs(result[i].z()) - 1.5 * sigma) < 1e-9;
+    on_own += std::abs(result[i].z() - m.side[i]) < 1e-9;
+  }
+  EXPECT_EQ(moved, on_a_layer);
+  // Some in-between points lie within a fifth of the gap of a layer and stay (the middle 60%
+  // of the gap: 2 / 3 of them lie farther).
+  EXPECT_GT(on_a_layer, 0.6 * between);
+  // The input picks the wrong side with probability Phi(-1.5) = 6.7%.
+  EXPECT_GT(on_own, 0.88 * on_a_layer);
+}
+
+TEST(MoveBetweenLayerPointsOntoLayers, OneSheetDoesNotMove) {
+  // A flat sheet whose outputs keep a residual of a third of the noise, and a cap of a sphere
+  // of radius 0.3 sampled 0.005 apart with noise 1e-4: its middle and rim part into runs 20
+  // noise deviations and more apart.
+  std::mt19937_64 random(9);
+  for (const bool curved : {false, true}) {
+    const double sigma = curved ? 1e-4 : 0.01;
+    std::normal_distribution<double> noise(0.0, sigma);
+    energy::PointList inputs, outputs, normals;
+    for (int a = 0; a < 70; ++a) {
+      for (int b = 0; b < 70; ++b) {
+        const double x = 0.005 * (a - 35), y = 0.005 * (b - 35);
+        energy::Point3 surface(x, y, 0.0), normal(0.0, 0.0, 1.0);
+        if (curved) {
+          normal = energy::Point3(x, y, std::sqrt(0.09 - x * x - y * y)).normalized();
+          surface = 0.3 * normal;
+        }
+        outputs.push_back(surface + (curved ? 0.0 : noise(random) / 3.0) * normal);
+        inputs.push_back(surface + noise(random) * normal);
+        normals.push_back(normal);
+      }
+    }
+    const std::vector<uint8_t> movable(outputs.size(), 1);
+    int moved = -1;
+    EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, 2, &moved),
+              outputs)
+        << (curved ? "curved cap" : "flat sheet");
+    EXPECT_EQ(moved, 0);
+  }
+}
+
+TEST(MoveBetweenLayerPointsOntoLayers, FewerPointsThanANeighbourhoodStay) {
+  Layered m = TwoLayers(0.015, 0.01, 3);
+  m.inputs.resize(kLayerNeighbors - 1);
+  m.outputs.resize(kLayerNeighbors - 1);
+  m.normals.resize(kLayerNeighbors - 1);
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 2),
+            m.outputs);
+}
+
+}  // namespace
+}  // namespace lpd::solvers
