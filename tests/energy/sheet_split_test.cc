@@ -189,6 +189,36 @@ TEST(SheetSplit, FootprintDifferenceMatchesClosedForms) {
 // A low-noise sheet bent one way (a cylinder) parts into a middle strip and two rims: its
 // runs are as far apart as two sides' and not flat-topped, but they cover the disk
 // differently, so the region is one sheet.
+TEST(BestLowerRun, IsTheSplitOfLeastWithinRunSquaresByBruteForce) {
+  std::mt19937_64 random(41);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (const int count : {9, 40, 400}) {
+    for (const int min_run : {1, 4, count / 5}) {
+      std::vector<double> sorted(count);
+      for (int a = 0; a < count; ++a) sorted[a] = noise(random) + (a % 3 == 0 ? 2.5 : 0.0);
+      std::sort(sorted.begin(), sorted.end());
+      auto squares = [&](int begin, int end) {
+        double mean = 0.0, sum = 0.0;
+        for (int a = begin; a < end; ++a) mean += sorted[a] / (end - begin);
+        for (int a = begin; a < end; ++a) sum += (sorted[a] - mean) * (sorted[a] - mean);
+        return sum;
+      };
+      int best_size = 0;
+      double best = squares(0, count);
+      for (int m = min_run; m <= count - min_run; ++m) {
+        const double within = squares(0, m) + squares(m, count);
+        if (within < best) {
+          best = within;
+          best_size = m;
+        }
+      }
+      double within = 0.0;
+      EXPECT_EQ(BestLowerRun(sorted, min_run, &within), best_size) << count << " " << min_run;
+      EXPECT_NEAR(within, best, 1e-9 * best);
+    }
+  }
+}
+
 TEST(SheetSplit, ALowNoiseCylinderIsNotTwoSides) {
   std::mt19937_64 random(4);
   std::normal_distribution<double> noise(0.0, 1e-4);
