@@ -90,10 +90,9 @@ bool MoveOntoLayer(const Layers& layers, const energy::Point3& o, const energy::
   const double height = layers.normal.dot(o - layers.origin);
   const double off[2] = {layers.median[0] - height, layers.median[1] - height};
   const int nearer = std::abs(off[0]) < std::abs(off[1]) ? 0 : 1;
-  if (!(std::abs(off[nearer]) >
-        std::max(kBetweenLayerSpreads * layers.spread[nearer], kBetweenLayerGapShare * layers.gap))) {
-    return false;
-  }
+  const double margin =
+      std::max(kBetweenLayerSpreads * layers.spread[nearer], kBetweenLayerGapShare * layers.gap);
+  if (!(std::abs(off[nearer]) > margin)) return false;
   const double input_height = layers.normal.dot(p - layers.origin);
   const int side = std::abs(input_height - layers.median[0]) <
                            std::abs(input_height - layers.median[1])

@@ -6,13 +6,13 @@
 // land in between: on a plate 2.8 noise deviations thick at 50K points and 3% noise, a fifth
 // of the points lie more than a sixth of the gap from either side (CD / P2M x 1e4 2.54 /
 // 2.37; put on the side their input's sign picks, 0.90 / 0.74; by this step 1.44 / 1.28;
-// docs/method.md, "Points between two layers"). At 50K the nearest hundred outputs of a point on one side barely
-// reach the other, so the layers are read over kLayerNeighbors outputs.
+// docs/method.md, "Points between two layers"). At 50K the nearest hundred outputs of a
+// point on one side barely reach the other, so the layers are read over kLayerNeighbors.
 //
-// Around each output o (unit normal n), its kLayerNeighbors nearest outputs o_j (normals n_j)
-// give a layer normal c, the dominant eigenvector of sum n_j n_j^T (turned towards n), and
-// heights h_j = c.(o_j - o). Their exact 2-means split (runs of kMinLayerShare of the points
-// or more) reads as two layers where
+// Around every kLayerCentreStride-th output o_c, its kLayerNeighbors nearest outputs o_j
+// (normals n_j) give a layer normal c, the dominant eigenvector of sum n_j n_j^T, and heights
+// h_j = c.(o_j - o_c). Their exact 2-means split (runs of kMinLayerShare of the points or
+// more; energy::BestLowerRun) reads as two layers where
 //   - the runs' means are kMinLayerGapDeviations to kMaxLayerGapDeviations deviations of the
 //     inputs' offsets from their outputs apart (OffsetDeviation, merged_sides.h): the sides
 //     the split takes apart (2.8 deviations and up) but whose points it leaves between; far
@@ -21,10 +21,11 @@
 //     (a uniform spread splits at 3.46, one Gaussian sheet at about 2.7);
 //   - the footprint difference is under kMaxLayerFootprintDifference (sheet_split.h: two sides
 //     cover the same footprint, a curved patch's middle and rim do not).
-// The output lies between them where its height, 0, is more than kBetweenLayerSpreads robust
-// deviations (1.4826 median absolute deviation about the median) of the nearer run from that
-// run's median, and more than kBetweenLayerGapShare of the gap. It then moves along c to the
-// median of the run nearer to its input's height c.(p - o).
+// An output o whose nearest centre has two layers lies between them where its height
+// c.(o - o_c) is more than kBetweenLayerSpreads robust deviations (kMedianAbsToSigma times
+// the median absolute deviation about the median) of the nearer run from that run's median,
+// and more than kBetweenLayerGapShare of the gap from it. It then moves along c onto the
+// median of the run nearer to its input's height c.(p - o_c).
 //
 // The final step runs it where the probe reads the noise wider than kCalibratedReadRatio
 // spacings (neighborhood_size.h), where the split leaves such points: at 10K points and 2%
