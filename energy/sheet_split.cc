@@ -78,7 +78,7 @@ double FootprintDifference(const std::vector<Point3>& points, const std::vector<
   return ((covariance[0] - covariance[1]).norm() + (mean[0] - mean[1]).squaredNorm()) / spread;
 }
 
-int BestLowerRun(const std::vector<double>& sorted, int min_run, double* within) {
+TwoRuns BestTwoRuns(const std::vector<double>& sorted, int min_run) {
   const int count = static_cast<int>(sorted.size());
   double sum = 0.0, squares = 0.0;
   for (double o : sorted) {
@@ -86,25 +86,30 @@ int BestLowerRun(const std::vector<double>& sorted, int min_run, double* within)
     squares += o * o;
   }
   // Prefix sums over the lower run, which holds min_run or more.
-  double best = squares - sum * sum / count, lower_sum = 0.0, lower_squares = 0.0;
+  TwoRuns runs;
+  runs.within = squares - sum * sum / count;
+  double lower_sum = 0.0, lower_squares = 0.0, best_lower_sum = 0.0;
   for (int a = 0; a < min_run - 1; ++a) {
     lower_sum += sorted[a];
     lower_squares += sorted[a] * sorted[a];
   }
-  int best_size = 0;
   for (int m = min_run; m <= count - min_run; ++m) {
     lower_sum += sorted[m - 1];
     lower_squares += sorted[m - 1] * sorted[m - 1];
     const double upper_sum = sum - lower_sum, upper_squares = squares - lower_squares;
     const double run_squares = lower_squares - lower_sum * lower_sum / m + upper_squares -
                                upper_sum * upper_sum / (count - m);
-    if (run_squares < best) {
-      best = run_squares;
-      best_size = m;
+    if (run_squares < runs.within) {
+      runs.within = run_squares;
+      runs.lower_size = m;
+      best_lower_sum = lower_sum;
     }
   }
-  *within = best;
-  return best_size;
+  if (runs.lower_size > 0) {
+    runs.lower_mean = best_lower_sum / runs.lower_size;
+    runs.upper_mean = (sum - best_lower_sum) / (count - runs.lower_size);
+  }
+  return runs;
 }
 
 SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
@@ -120,16 +125,13 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   for (int a = 0; a < count; ++a) offsets[a] = split.Offset(local[a]);
   sorted = offsets;
   std::sort(sorted.begin(), sorted.end());
-  double best = 0.0;
-  const int best_size = BestLowerRun(sorted, kMinSheetPoints, &best);
+  const TwoRuns runs = BestTwoRuns(sorted, kMinSheetPoints);
+  const int best_size = runs.lower_size;
+  const double best = runs.within;
   if (best_size == 0 || !(best > 0.0)) return split;
   split.threshold = 0.5 * (sorted[best_size - 1] + sorted[best_size]);
-  double lower = 0.0;
-  for (int a = 0; a < best_size; ++a) lower += sorted[a];
-  double sum = 0.0;
-  for (double o : sorted) sum += o;
-  split.lower_mean = lower / best_size;
-  split.upper_mean = (sum - lower) / (count - best_size);
+  split.lower_mean = runs.lower_mean;
+  split.upper_mean = runs.upper_mean;
   const double within_deviation = std::sqrt(best / (count - 2));
   double fourth = 0.0;
   for (double o : offsets) {

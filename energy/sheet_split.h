@@ -104,10 +104,16 @@ struct SheetSplit {
 // The split of points[members[0 .. count)] (count >= 2 kMinSheetPoints, else separation 0).
 SheetSplit SplitSheets(const PointList& points, const int* members, int count);
 
-// The exact one-dimensional 2-means of `sorted` (ascending): the size of the lower run, from
-// min_run to size - min_run, whose two runs have the least sum of squared offsets from their
-// own means (in *within); 0 where no split lowers it under the whole list's.
-int BestLowerRun(const std::vector<double>& sorted, int min_run, double* within);
+// The exact one-dimensional 2-means of a sorted list: the lower run sorted[0 .. lower_size)
+// and the upper run, each of min_run values or more, whose values have the least sum of
+// squared offsets from their own run's mean.
+struct TwoRuns {
+  int lower_size = 0;  // 0 where no split lowers that sum under the whole list's
+  double within = 0.0;  // the sum, over both runs
+  double lower_mean = 0.0;
+  double upper_mean = 0.0;
+};
+TwoRuns BestTwoRuns(const std::vector<double>& sorted, int min_run);
 
 // The footprint difference (above) of the runs offsets[a] < threshold and >= threshold, with
 // offsets[a] the offset of points[a] along the unit `normal` from `origin`; 0 where a run is

@@ -58,15 +58,11 @@ Layers ReadLayers(const energy::PointList& outputs, const energy::PointList& nor
   sorted = heights;
   std::sort(sorted.begin(), sorted.end());
   const int min_run = std::max(1, static_cast<int>(std::ceil(kMinLayerShare * found)));
-  double within = 0.0;
-  const int lower_size = energy::BestLowerRun(sorted, min_run, &within);
+  const energy::TwoRuns runs = energy::BestTwoRuns(sorted, min_run);
+  const int lower_size = runs.lower_size;
+  const double within = runs.within;
   if (lower_size == 0 || !(within > 0.0)) return layers;
-  double lower_sum = 0.0, sum = 0.0;
-  for (int a = 0; a < found; ++a) {
-    sum += sorted[a];
-    if (a < lower_size) lower_sum += sorted[a];
-  }
-  layers.gap = (sum - lower_sum) / (found - lower_size) - lower_sum / lower_size;
+  layers.gap = runs.upper_mean - runs.lower_mean;
   if (!(layers.gap > kMinLayerGapDeviations * deviation &&
         layers.gap < kMaxLayerGapDeviations * deviation)) {
     return layers;
@@ -122,11 +118,9 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
   energy::PointList anchor_points(count);
   for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
   // The layers around every kLayerCentreStride-th anchor.
-  std::vector<int> centres;
-  for (int r = 0; r < count; r += kLayerCentreStride) centres.push_back(r);
-  const int num_centres = static_cast<int>(centres.size());
+  const int num_centres = (count + kLayerCentreStride - 1) / kLayerCentreStride;
   energy::PointList centre_points(num_centres);
-  for (int c = 0; c < num_centres; ++c) centre_points[c] = anchor_points[centres[c]];
+  for (int c = 0; c < num_centres; ++c) centre_points[c] = anchor_points[c * kLayerCentreStride];
   std::vector<Layers> layers(num_centres);
   const energy::NearestNeighbors search(anchor_points);
   search.ForEach(num_centres, kLayerNeighbors, num_threads,

@@ -12,7 +12,7 @@
 // Around every kLayerCentreStride-th output o_c, its kLayerNeighbors nearest outputs o_j
 // (normals n_j) give a layer normal c, the dominant eigenvector of sum n_j n_j^T, and heights
 // h_j = c.(o_j - o_c). Their exact 2-means split (runs of kMinLayerShare of the points or
-// more; energy::BestLowerRun) reads as two layers where
+// more; energy::BestTwoRuns) reads as two layers where
 //   - the runs' means are kMinLayerGapDeviations to kMaxLayerGapDeviations deviations of the
 //     inputs' offsets from their outputs apart (OffsetDeviation, merged_sides.h): the sides
 //     the split takes apart (2.8 deviations and up) but whose points it leaves between; far

@@ -186,10 +186,7 @@ TEST(SheetSplit, FootprintDifferenceMatchesClosedForms) {
   EXPECT_LT(mean, 0.6 * kMaxTwoSidesFootprintDifference);
 }
 
-// A low-noise sheet bent one way (a cylinder) parts into a middle strip and two rims: its
-// runs are as far apart as two sides' and not flat-topped, but they cover the disk
-// differently, so the region is one sheet.
-TEST(BestLowerRun, IsTheSplitOfLeastWithinRunSquaresByBruteForce) {
+TEST(BestTwoRuns, IsTheSplitOfLeastWithinRunSquaresByBruteForce) {
   std::mt19937_64 random(41);
   std::normal_distribution<double> noise(0.0, 1.0);
   for (const int count : {9, 40, 400}) {
@@ -197,9 +194,14 @@ TEST(BestLowerRun, IsTheSplitOfLeastWithinRunSquaresByBruteForce) {
       std::vector<double> sorted(count);
       for (int a = 0; a < count; ++a) sorted[a] = noise(random) + (a % 3 == 0 ? 2.5 : 0.0);
       std::sort(sorted.begin(), sorted.end());
-      auto squares = [&](int begin, int end) {
-        double mean = 0.0, sum = 0.0;
+      auto mean_of = [&](int begin, int end) {
+        double mean = 0.0;
         for (int a = begin; a < end; ++a) mean += sorted[a] / (end - begin);
+        return mean;
+      };
+      auto squares = [&](int begin, int end) {
+        const double mean = mean_of(begin, end);
+        double sum = 0.0;
         for (int a = begin; a < end; ++a) sum += (sorted[a] - mean) * (sorted[a] - mean);
         return sum;
       };
@@ -212,13 +214,20 @@ TEST(BestLowerRun, IsTheSplitOfLeastWithinRunSquaresByBruteForce) {
           best_size = m;
         }
       }
-      double within = 0.0;
-      EXPECT_EQ(BestLowerRun(sorted, min_run, &within), best_size) << count << " " << min_run;
-      EXPECT_NEAR(within, best, 1e-9 * best);
+      const TwoRuns runs = BestTwoRuns(sorted, min_run);
+      EXPECT_EQ(runs.lower_size, best_size) << count << " " << min_run;
+      EXPECT_NEAR(runs.within, best, 1e-9 * best);
+      if (best_size > 0) {
+        EXPECT_NEAR(runs.lower_mean, mean_of(0, best_size), 1e-12);
+        EXPECT_NEAR(runs.upper_mean, mean_of(best_size, count), 1e-12);
+      }
     }
   }
 }
 
+// A low-noise sheet bent one way (a cylinder) parts into a middle strip and two rims: its
+// runs are as far apart as two sides' and not flat-topped, but they cover the disk
+// differently, so the region is one sheet.
 TEST(SheetSplit, ALowNoiseCylinderIsNotTwoSides) {
   std::mt19937_64 random(4);
   std::normal_distribution<double> noise(0.0, 1e-4);
