@@ -24,11 +24,29 @@ void Members(int i, const int* nearest, int found, int wanted, std::vector<int>*
   }
 }
 
+// The k nearest of members[1 ..] on p_i's side of `split`, then (if fewer than k) the nearest
+// of the other side; the k nearest where the split found no two parallel sides.
+void OwnSideNearest(const PointList& points, int i, const SheetSplit& split,
+                    const std::vector<int>& members, int k, int* own) {
+  if (!(split.separation > 0.0)) {
+    std::copy_n(members.begin() + 1, k, own);
+    return;
+  }
+  const int side = split.Side(split.Offset(points[i]));
+  int count = 0;
+  for (size_t a = 1; a < members.size() && count < k; ++a) {
+    if (split.Side(split.Offset(points[members[a]])) == side) own[count++] = members[a];
+  }
+  for (size_t a = 1; a < members.size() && count < k; ++a) {
+    if (split.Side(split.Offset(points[members[a]])) != side) own[count++] = members[a];
+  }
+}
+
 }  // namespace
 
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
                                  bool split_sheets, const SplitSearch* searched_before,
-                                 ThinRegionGrowth growth) {
+                                 ThinRegionGrowth growth, SplitNeighborhood judged_on) {
   if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
   const int n = static_cast<int>(points.size());
   if (n < k + 1) {
@@ -39,13 +57,18 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   NeighborGraph graph;
   graph.k = k;
   graph.neighbors.resize(static_cast<size_t>(n) * k);
-  const int searched =
-      split_sheets ? std::min(n, std::max(2 * k + 1, kSheetSplitPoints)) : k + 1;
+  // A thin point's own side is taken from its 2k + 1 nearest: from the search its split is
+  // judged on where that holds them, else from a second search over the thin points only.
+  const int candidates = std::min(n, 2 * k + 1);
+  const int judged = judged_on == SplitNeighborhood::kCandidates ? candidates : k + 1;
+  const int searched = split_sheets ? std::min(n, std::max(judged, kSheetSplitPoints)) : k + 1;
+  const bool wide = split_sheets && candidates > searched;
   std::vector<float> separation(split_sheets ? n : 0), within_kurtosis(split_sheets ? n : 0),
       footprint_difference(split_sheets ? n : 0);
-  // With split_sheets, each point's k nearest candidates on its own side, in case its region
-  // turns out thin (found in the same search, so that a thin region needs no second one).
-  std::vector<int> own_side(split_sheets ? static_cast<size_t>(n) * k : 0);
+  std::vector<SheetSplit> splits(wide ? n : 0);
+  // Without a second search, each point's k nearest candidates on its own side, in case its
+  // region turns out thin.
+  std::vector<int> own_side(split_sheets && !wide ? static_cast<size_t>(n) * k : 0);
   const bool reuse = split_sheets && searched_before != nullptr &&
                      searched_before->searched == searched && searched_before->num_points() == n;
   auto visit = [&](int i, const int* nearest, const double*, int found) {
@@ -62,19 +85,10 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     separation[i] = static_cast<float>(split.separation);
     within_kurtosis[i] = static_cast<float>(split.within_kurtosis);
     footprint_difference[i] = static_cast<float>(split.footprint_difference);
-    int* own = own_side.data() + static_cast<size_t>(i) * k;
-    if (!(split.separation > 0.0)) {  // not two parallel sides here
-      std::copy_n(members.begin() + 1, k, own);
-      return;
-    }
-    // The nearest on p_i's side, then (if fewer than k) the nearest of the other side.
-    const int side = split.Side(split.Offset(points[i]));
-    int count = 0;
-    for (size_t a = 1; a < members.size() && count < k; ++a) {
-      if (split.Side(split.Offset(points[members[a]])) == side) own[count++] = members[a];
-    }
-    for (size_t a = 1; a < members.size() && count < k; ++a) {
-      if (split.Side(split.Offset(points[members[a]])) != side) own[count++] = members[a];
+    if (wide) {
+      splits[i] = split;
+    } else {
+      OwnSideNearest(points, i, split, members, k, own_side.data() + static_cast<size_t>(i) * k);
     }
   };
   if (reuse) {
@@ -114,10 +128,26 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
         joined |= is_thin[i] != 0;
       }
     }
+    std::vector<int> thin;
     for (int i = 0; i < n; ++i) {
-      if (!is_thin[i]) continue;
-      std::copy_n(own_side.data() + static_cast<size_t>(i) * k, k,
-                  graph.neighbors.data() + static_cast<size_t>(i) * k);
+      if (is_thin[i]) thin.push_back(i);
+    }
+    if (wide && !thin.empty()) {
+      const NearestNeighbors search(points);
+      search.ForEach(static_cast<int>(thin.size()), candidates, num_threads,
+                     [&](int t) { return points[thin[t]]; },
+                     [&](int t, const int* nearest, const double*, int found) {
+                       thread_local std::vector<int> members;
+                       const int i = thin[t];
+                       Members(i, nearest, found, candidates, &members);
+                       OwnSideNearest(points, i, splits[i], members, k,
+                                      graph.neighbors.data() + static_cast<size_t>(i) * k);
+                     });
+    } else {
+      for (int i : thin) {
+        std::copy_n(own_side.data() + static_cast<size_t>(i) * k, k,
+                    graph.neighbors.data() + static_cast<size_t>(i) * k);
+      }
     }
   }
   BuildPairs(&graph, num_threads);

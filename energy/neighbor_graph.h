@@ -42,17 +42,25 @@ struct NeighborGraph {
 // kThinGrowthSeedShare of the points or more, or wherever there is one.
 enum class ThinRegionGrowth { kNone, kWhereCommon, kEverywhere };
 
+// The neighbourhood each point's split is judged on (sheet_split.h): its 2k + 1 nearest, the
+// candidates its own side is taken from (at least kSheetSplitPoints); or kSheetSplitPoints
+// (k + 1 if more), the thin points' 2k + 1 candidates then found in a second search over them
+// alone and told apart by that split.
+enum class SplitNeighborhood { kCandidates, kSplitPoints };
+
 // Builds N and M for `points` with a k-d tree (nanoflann), using `num_threads` threads.
 // With `split_sheets`, N(i) is the k nearest of the 2k nearest on p_i's own side where they
 // lie on two sheets of a thin part (sheet_split.h), so that a fit does not average the two
-// sides, the thin regions grown as `growth` says. `searched`, when given, must
-// come from a search over these same points; where it searched as many points as the split
-// needs, the graph takes its lists and splits instead of searching again (same result).
+// sides, the thin regions grown as `growth` says and the splits judged on `judged_on`.
+// `searched`, when given, must come from a search over these same points; where it searched
+// as many points as the split needs, the graph takes its lists and splits instead of
+// searching again (same result).
 // Requires points.size() >= k + 1 and k >= 1; throws std::invalid_argument otherwise.
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
                                  bool split_sheets = false,
                                  const SplitSearch* searched = nullptr,
-                                 ThinRegionGrowth growth = ThinRegionGrowth::kWhereCommon);
+                                 ThinRegionGrowth growth = ThinRegionGrowth::kWhereCommon,
+                                 SplitNeighborhood judged_on = SplitNeighborhood::kCandidates);
 
 // Builds M and the incidence lists from already filled `graph.k` and `graph.neighbors`.
 void BuildPairs(NeighborGraph* graph, int num_threads = 1);

@@ -93,7 +93,7 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
   problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,
                                      options.split_sheets, searched,
-                                     options.thin_region_growth);
+                                     options.thin_region_growth, options.split_neighborhood);
   ComputeWeights(options.min_squared_distance_ratio, &problem);
   return problem;
 }

@@ -28,6 +28,9 @@ struct ProblemOptions {
   // How far thin regions grow (BuildNeighborGraph); StartDenoising makes it kEverywhere
   // where the noise is as wide as the spacing.
   ThinRegionGrowth thin_region_growth = ThinRegionGrowth::kWhereCommon;
+  // The neighbourhoods the splits are judged on (BuildNeighborGraph); StartDenoising judges
+  // them on kSheetSplitPoints where the probe finds few thin candidates.
+  SplitNeighborhood split_neighborhood = SplitNeighborhood::kCandidates;
   bool IsValid(std::string* error) const;
 };
 

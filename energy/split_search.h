@@ -2,8 +2,9 @@
 //
 // The noise probe (solvers/neighborhood_size.h) searches the kSheetSplitPoints nearest of
 // every point and splits each such neighbourhood (sheet_split.h); BuildNeighborGraph needs the
-// same search and splits whenever 2k + 1 <= kSheetSplitPoints. Kept from the probe, they spare
-// the graph a second k-d tree search over the same points.
+// same search and splits whenever it judges the splits on kSheetSplitPoints (always where
+// 2k + 1 <= kSheetSplitPoints). Kept from the probe, they spare the graph a second k-d tree
+// search over the same points.
 #ifndef LPD_ENERGY_SPLIT_SEARCH_H_
 #define LPD_ENERGY_SPLIT_SEARCH_H_
 

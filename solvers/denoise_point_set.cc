@@ -174,6 +174,12 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
     if (state.neighborhood.read_sigma >= state.neighborhood.spacing) {
       problem_options.thin_region_growth = energy::ThinRegionGrowth::kEverywhere;
     }
+    // Where few of the probe's regions nearly split, judging the splits on 2k + 1 points
+    // rather than kSheetSplitPoints changes no cell of the benchmark's meshes and costs a
+    // search of 2k + 1 (docs/performance.md); thin-walled parts need it.
+    if (state.neighborhood.thin_candidate_fraction < kThinShareForNoWidening) {
+      problem_options.split_neighborhood = energy::SplitNeighborhood::kSplitPoints;
+    }
     if (!thinning.rows.empty()) SplitOffUnsolved(thinning.rows, ordered_points, &state,
                                                  &solved_points);
   }
