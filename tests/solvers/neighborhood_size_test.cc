@@ -135,14 +135,20 @@ TEST(NeighborhoodSize, TheGraphFromTheProbesSearchIsTheGraphSearchedAgain) {
   ASSERT_NE(size.split_search, nullptr);
   EXPECT_EQ(size.split_search->num_points(), static_cast<int>(points.size()));
   EXPECT_GT(size.two_sheet_fraction, 0.5);
-  for (const int k : {20, 63, 70}) {
-    energy::ProblemOptions options;
-    options.k = k;
-    const energy::Problem searched = energy::BuildProblem(points, options, 2);
-    const energy::Problem reused =
-        energy::BuildProblem(points, options, 2, size.split_search.get());
-    EXPECT_EQ(reused.graph.neighbors, searched.graph.neighbors) << "k " << k;
-    EXPECT_EQ(reused.graph.pairs, searched.graph.pairs) << "k " << k;
+  // Judged on kSheetSplitPoints, k = 70 and 127 take the probe's lists too (the thin points'
+  // 2k + 1 candidates from a second search); k = 130 needs more than the probe found.
+  for (const auto judged_on :
+       {energy::SplitNeighborhood::kCandidates, energy::SplitNeighborhood::kSplitPoints}) {
+    for (const int k : {20, 63, 70, 127, 130}) {
+      energy::ProblemOptions options;
+      options.k = k;
+      options.split_neighborhood = judged_on;
+      const energy::Problem searched = energy::BuildProblem(points, options, 2);
+      const energy::Problem reused =
+          energy::BuildProblem(points, options, 2, size.split_search.get());
+      EXPECT_EQ(reused.graph.neighbors, searched.graph.neighbors) << "k " << k;
+      EXPECT_EQ(reused.graph.pairs, searched.graph.pairs) << "k " << k;
+    }
   }
   NeighborhoodSizeOptions unsplit;
   unsplit.split_sheets = false;
