@@ -123,6 +123,8 @@ double PlaneReadFraction(double read_ratio) {
   return lower->fraction + t * (upper->fraction - lower->fraction);
 }
 
+double LastPlaneReadRatio() { return std::end(kPlaneReadings)[-1].read_ratio; }
+
 double WideNoiseFactor(double read_ratio, double thin_candidate_fraction) {
   if (!(read_ratio > kCalibratedReadRatio)) return 1.0;
   const double plane_factor =

@@ -69,6 +69,11 @@ struct NeighborhoodSizeOptions {
 // reads this sigma / spacing (linear between the measured readings, held past their ends).
 double PlaneReadFraction(double read_ratio);
 
+// The largest read sigma / spacing of the plane readings: there the probe reads 0.41 of the
+// true sigma, and less ever faster past it, so a reading past it no longer tells how wide the
+// noise is, only that it spans more than about 3 spacings (thinning.h).
+double LastPlaneReadRatio();
+
 // The probe's read sigma / spacing up to which c holds.
 constexpr double kCalibratedReadRatio = 1.15;
 

@@ -14,6 +14,14 @@ constexpr int kMaxRounds = 8;
 // The first step's guess of b (below): k ~ n^0.15-0.2 on 1M points, n^0.4-0.5 on 20-80K.
 constexpr double kFirstGrowth = 0.25;
 constexpr uint64_t kSubsampleSeed = 1;
+// Where the probe cannot read the noise (NoiseUnreadable), the subsample is shrunk by
+// kReadableStep until it reads under kReadableRatio spacings, where a plane's reading is
+// 0.55 of the true sigma (neighborhood_size.cc): a neighbourhood of k points is then wider in
+// noise deviations, as WideNoiseFactor would make it (docs/method.md, "Noise the probe cannot
+// read").
+constexpr double kReadableRatio = 1.25;
+constexpr double kReadableStep = 0.8;
+constexpr int kMaxReadableRounds = 12;
 
 // The subsample of round(fraction n) points (at least min_k + 1) and its k.
 Thinning Subsample(const energy::PointList& points, double fraction,
@@ -29,8 +37,16 @@ Thinning Subsample(const energy::PointList& points, double fraction,
   return thinning;
 }
 
-double ProblemSize(const Thinning& thinning) {
-  return static_cast<double>(thinning.rows.size()) * thinning.size.k;
+double ProblemSize(const Thinning& thinning, int n) {
+  const size_t solved = thinning.rows.empty() ? static_cast<size_t>(n) : thinning.rows.size();
+  return static_cast<double>(solved) * thinning.size.k;
+}
+
+// The probe cannot read the noise (past LastPlaneReadRatio) where c cannot widen either: the
+// sides of thin parts fade WideNoiseFactor out.
+bool NoiseUnreadable(const NeighborhoodSize& size, const NeighborhoodSizeOptions& options) {
+  return options.wide_noise && size.read_sigma > LastPlaneReadRatio() * size.spacing &&
+         size.thin_candidate_fraction > kThinShareForFullWidening;
 }
 
 }  // namespace
@@ -38,14 +54,24 @@ double ProblemSize(const Thinning& thinning) {
 Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeOptions& options,
                         int num_threads) {
   const int n = static_cast<int>(points.size());
-  Thinning whole;
-  whole.size = ChooseNeighborhoodSize(points, options, num_threads);
-  const double budget = options.max_problem_size;
-  double size = static_cast<double>(n) * whole.size.k;
+  Thinning start;  // the whole cloud, or the subsample on which the probe reads the noise
+  start.size = ChooseNeighborhoodSize(points, options, num_threads);
   int probes = 1;
+  double start_fraction = 1.0;
+  if (NoiseUnreadable(start.size, options)) {
+    for (int round = 0; round < kMaxReadableRounds &&
+                        start.size.read_sigma > kReadableRatio * start.size.spacing;
+         ++round) {
+      start_fraction *= kReadableStep;
+      start = Subsample(points, start_fraction, options, num_threads);
+      ++probes;
+    }
+  }
+  const double budget = options.max_problem_size;
+  double size = ProblemSize(start, n);
   if (size <= budget) {
-    whole.probes = probes;
-    return whole;
+    start.probes = probes;
+    return start;
   }
   // k grows with the density, but more slowly (k ~ n^b with b about 0.15-0.2 on 1M points:
   // the probe reads the noise lower, relative to the spacing, the denser the cloud), so the
@@ -54,16 +80,17 @@ Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeO
   // subsamples on the 1M-point cad_part, against five probes when each step assumed k ~ n. k
   // is an integer, so the search keeps the largest subsample within the budget that it met.
   const double target = 0.5 * (1.0 + kLowestUse) * budget;  // the middle of the window
-  double fraction = 1.0;
+  double fraction = start_fraction;
   double growth = kFirstGrowth;  // b
-  double last_fraction = 1.0;
-  int last_k = whole.size.k;
+  double last_fraction = start_fraction;
+  int last_k = start.size.k;
   Thinning best;
   for (int round = 0; round < kMaxRounds; ++round) {
-    fraction = std::min(1.0, fraction * std::pow(target / size, 1.0 / (1.0 + growth)));
+    fraction =
+        std::min(start_fraction, fraction * std::pow(target / size, 1.0 / (1.0 + growth)));
     Thinning candidate = Subsample(points, fraction, options, num_threads);
     ++probes;
-    size = ProblemSize(candidate);
+    size = ProblemSize(candidate, n);
     if (fraction != last_fraction) {  // k clamped at min_k or max_k: b = 0
       growth = std::clamp(std::log(static_cast<double>(last_k) / candidate.size.k) /
                               std::log(last_fraction / fraction),
@@ -71,13 +98,13 @@ Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeO
     }
     last_fraction = fraction;
     last_k = candidate.size.k;
-    if (size <= budget && size > ProblemSize(best)) best = std::move(candidate);
+    if (size <= budget && size > ProblemSize(best, n)) best = std::move(candidate);
     if (size <= budget && size >= kLowestUse * budget) break;
   }
   while (best.rows.empty()) {  // never within the budget yet: shrink until it is
     fraction *= kLowestUse * budget / size;
     Thinning candidate = Subsample(points, fraction, options, num_threads);
-    size = ProblemSize(candidate);
+    size = ProblemSize(candidate, n);
     ++probes;
     if (size <= budget || static_cast<int>(candidate.rows.size()) <= options.min_k + 1) {
       best = std::move(candidate);

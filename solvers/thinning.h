@@ -8,6 +8,13 @@
 // same subsample size and the same k: beyond the budget, the result no longer depends on the
 // density. On the 1M-point cad_part at 0.5% noise, the whole cloud at k = 91 gives 1.30e-3 of
 // the diagonal in 120 s; a subsample of 250K at k = 73 gives 0.56e-3 (docs/method.md).
+//
+// A subsample is also solved where the probe cannot read the noise: past its plane readings
+// (LastPlaneReadRatio) with the widening of c faded out by thin parts' sides
+// (WideNoiseFactor), the cloud is thinned until the probe reads under 1.25 spacings, so that
+// its neighbourhoods span more noise deviations (a thin cylinder of radius 2 noise deviations
+// at 50,000 points: P2M x 1e4 4.26 -> 1.86; docs/method.md, "Noise the probe cannot read").
+// The budget then applies to that subsample.
 #ifndef LPD_SOLVERS_THINNING_H_
 #define LPD_SOLVERS_THINNING_H_
 

@@ -1,7 +1,8 @@
 // The subsample and its extension to every point: the subsample is uniform and reproducible;
 // a solved point gets exactly its own result back; points left out of an exact sphere land on
 // it; the thinning meets its budget and, past it, gives a denser sampling of the same surface
-// the same subsample size and k.
+// the same subsample size and k; where the probe cannot read a thin part's noise, a subsample it
+// reads is solved.
 #include "solvers/subsample_extension.h"
 
 #include <cmath>
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "energy/normalization.h"
 #include "experiments/shapes/noise.h"
 #include "experiments/shapes/shape_catalog.h"
 #include "solvers/thinning.h"
@@ -139,6 +141,42 @@ TEST(ChooseThinning, PastTheBudgetADenserSamplingGivesTheSameSubsample) {
   EXPECT_EQ(clamped.size.k, 20);
   EXPECT_LE(clamped.probes, 3);
   EXPECT_NEAR(static_cast<double>(clamped.rows.size()), 0.95 * 5e5 / 20, 1.0);
+}
+
+// A cylinder of radius 0.03 and height 1 with Gaussian noise of 3% of its unit-sphere radius
+// (0.015: the radius is 2 noise deviations), as the learned denoisers' benchmark's thin part.
+experiments::NoisyPointSet NoisyThinCylinder(int n, uint64_t seed) {
+  const experiments::ProceduralShape shape =
+      experiments::MakeShape({"cylinder", {{"radius", 0.03}, {"height", 1.0}}});
+  experiments::NoiseOptions noise;
+  noise.sigma = 0.03;
+  noise.scale = experiments::NoiseScale::kUnitSphereRadius;
+  noise.seed = seed + 1;
+  return experiments::ApplyNoise(shape.Sample(n, seed).points, {}, noise);
+}
+
+TEST(ChooseThinning, WhereTheProbeCannotReadAThinPartsNoiseASubsampleItReadsIsSolved) {
+  const experiments::NoisyPointSet noisy = NoisyThinCylinder(20000, 3);
+  // The probe works in the frame of bounding-box diagonal 1.
+  const double sigma = noisy.sigma_absolute / energy::BoundingBoxDiagonal(noisy.points);
+  NeighborhoodSizeOptions options;
+  const NeighborhoodSize whole = ChooseNeighborhoodSize(noisy.points, options, 2);
+  // The reading is past the plane's, and the sides fade the widening of c out.
+  ASSERT_GT(whole.read_sigma, LastPlaneReadRatio() * whole.spacing);
+  ASSERT_GT(whole.thin_candidate_fraction, kThinShareForFullWidening);
+  const Thinning thinned = ChooseThinning(noisy.points, options, 2);
+  ASSERT_FALSE(thinned.rows.empty());
+  EXPECT_LE(thinned.size.read_sigma, 1.25 * thinned.size.spacing);
+  // The sparser cloud reads more of the true noise, and its neighbourhoods of k points, of
+  // radius sqrt(k / pi) spacings, span more noise deviations.
+  EXPECT_GT(thinned.size.read_sigma, 1.2 * whole.read_sigma);
+  const auto radius_in_sigmas = [sigma](const NeighborhoodSize& size) {
+    return std::sqrt(size.k / M_PI) * size.spacing / sigma;
+  };
+  EXPECT_GT(radius_in_sigmas(thinned.size), 1.3 * radius_in_sigmas(whole));
+  // Without the widening for wide noise (the paper's k rule) the whole cloud is solved.
+  options.wide_noise = false;
+  EXPECT_TRUE(ChooseThinning(noisy.points, options, 2).rows.empty());
 }
 
 }  // namespace
