@@ -15,11 +15,7 @@ constexpr int kMaxRounds = 8;
 constexpr double kFirstGrowth = 0.25;
 constexpr uint64_t kSubsampleSeed = 1;
 // Where the probe cannot read the noise (NoiseUnreadable), the subsample is shrunk by
-// kReadableStep until it reads under kReadableRatio spacings, where a plane's reading is
-// 0.55 of the true sigma (neighborhood_size.cc): a neighbourhood of k points is then wider in
-// noise deviations, as WideNoiseFactor would make it (docs/method.md, "Noise the probe cannot
-// read").
-constexpr double kReadableRatio = 1.25;
+// kReadableStep per probe until it reads under kReadableRatio spacings (thinning.h).
 constexpr double kReadableStep = 0.8;
 constexpr int kMaxReadableRounds = 12;
 

@@ -11,10 +11,10 @@
 //
 // A subsample is also solved where the probe cannot read the noise: past its plane readings
 // (LastPlaneReadRatio) with the widening of c faded out by thin parts' sides
-// (WideNoiseFactor), the cloud is thinned until the probe reads under 1.25 spacings, so that
-// its neighbourhoods span more noise deviations (a thin cylinder of radius 2 noise deviations
-// at 50,000 points: P2M x 1e4 4.26 -> 1.86; docs/method.md, "Noise the probe cannot read").
-// The budget then applies to that subsample.
+// (WideNoiseFactor), the cloud is thinned until the probe reads under kReadableRatio
+// spacings, so that its neighbourhoods span more noise deviations (a thin cylinder of radius
+// 2 noise deviations at 50,000 points: P2M x 1e4 4.26 -> 1.86; docs/method.md, "Noise the
+// probe cannot read"). The budget then applies to that subsample.
 #ifndef LPD_SOLVERS_THINNING_H_
 #define LPD_SOLVERS_THINNING_H_
 
@@ -24,6 +24,11 @@
 #include "solvers/neighborhood_size.h"
 
 namespace lpd::solvers {
+
+// Where a plane's reading is 0.50 of the true sigma (neighborhood_size.cc). Of 1.25, 1.27
+// and 1.29, the one that left none of the thin parts at 50K and meshes at 100K points we
+// measured worse than the whole cloud (docs/method.md).
+constexpr double kReadableRatio = 1.27;
 
 struct Thinning {
   std::vector<int> rows;  // the indices of the solved points, increasing; empty: all of them

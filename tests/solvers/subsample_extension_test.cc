@@ -166,7 +166,7 @@ TEST(ChooseThinning, WhereTheProbeCannotReadAThinPartsNoiseASubsampleItReadsIsSo
   ASSERT_GT(whole.thin_candidate_fraction, kThinShareForFullWidening);
   const Thinning thinned = ChooseThinning(noisy.points, options, 2);
   ASSERT_FALSE(thinned.rows.empty());
-  EXPECT_LE(thinned.size.read_sigma, 1.25 * thinned.size.spacing);
+  EXPECT_LE(thinned.size.read_sigma, kReadableRatio * thinned.size.spacing);
   // The sparser cloud reads more of the true noise, and its neighbourhoods of k points, of
   // radius sqrt(k / pi) spacings, span more noise deviations.
   EXPECT_GT(thinned.size.read_sigma, 1.2 * whole.read_sigma);
