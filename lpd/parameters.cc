@@ -185,7 +185,9 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
             "with k auto, where the noise probe reads sigma above 1.15 spacings (where it reads "
             "low, as measured on a noisy plane), widen the radius by the plane's under-reading, "
             "less and not at all as 5% to 9% of the probe's regions nearly split into two "
-            "sides (a thin part the wider k would merge); k up to max_k",
+            "sides (a thin part the wider k would merge); k up to max_k. Where it reads past "
+            "1.305 spacings (no longer telling the noise) and the widening is faded, solve a "
+            "subsample it reads under 1.27",
             "", "false"},
            [](O& o) -> bool& { return o.neighborhood.wide_noise; }),
       Integer("max_k", kBoth, {kNeighbours, "with k auto, the largest k chosen"},
