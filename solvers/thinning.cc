@@ -17,7 +17,7 @@ constexpr uint64_t kSubsampleSeed = 1;
 // Where the probe cannot read the noise (NoiseUnreadable), the subsample is shrunk by
 // kReadableStep per probe until it reads under kReadableRatio spacings (thinning.h).
 constexpr double kReadableStep = 0.8;
-constexpr int kMaxReadableRounds = 12;
+constexpr int kMaxReadableRounds = 20;
 
 // The subsample of round(fraction n) points (at least min_k + 1) and its k.
 Thinning Subsample(const energy::PointList& points, double fraction,
@@ -45,29 +45,20 @@ bool NoiseUnreadable(const NeighborhoodSize& size, const NeighborhoodSizeOptions
          size.thin_candidate_fraction > kThinShareForFullWidening;
 }
 
-}  // namespace
-
-Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeOptions& options,
-                        int num_threads) {
+// The whole cloud where n k meets the budget, else the largest subsample found that does;
+// `whole_size`: the whole cloud's probe.
+Thinning WithinBudget(const energy::PointList& points, const NeighborhoodSizeOptions& options,
+                      int num_threads, NeighborhoodSize* whole_size) {
   const int n = static_cast<int>(points.size());
-  Thinning start;  // the whole cloud, or the subsample on which the probe reads the noise
-  start.size = ChooseNeighborhoodSize(points, options, num_threads);
-  int probes = 1;
-  double start_fraction = 1.0;
-  if (NoiseUnreadable(start.size, options)) {
-    for (int round = 0; round < kMaxReadableRounds &&
-                        start.size.read_sigma > kReadableRatio * start.size.spacing;
-         ++round) {
-      start_fraction *= kReadableStep;
-      start = Subsample(points, start_fraction, options, num_threads);
-      ++probes;
-    }
-  }
+  Thinning whole;
+  whole.size = ChooseNeighborhoodSize(points, options, num_threads);
+  *whole_size = whole.size;
   const double budget = options.max_problem_size;
-  double size = ProblemSize(start, n);
+  double size = ProblemSize(whole, n);
+  int probes = 1;
   if (size <= budget) {
-    start.probes = probes;
-    return start;
+    whole.probes = probes;
+    return whole;
   }
   // k grows with the density, but more slowly (k ~ n^b with b about 0.15-0.2 on 1M points:
   // the probe reads the noise lower, relative to the spacing, the denser the cloud), so the
@@ -76,14 +67,13 @@ Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeO
   // subsamples on the 1M-point cad_part, against five probes when each step assumed k ~ n. k
   // is an integer, so the search keeps the largest subsample within the budget that it met.
   const double target = 0.5 * (1.0 + kLowestUse) * budget;  // the middle of the window
-  double fraction = start_fraction;
+  double fraction = 1.0;
   double growth = kFirstGrowth;  // b
-  double last_fraction = start_fraction;
-  int last_k = start.size.k;
+  double last_fraction = 1.0;
+  int last_k = whole.size.k;
   Thinning best;
   for (int round = 0; round < kMaxRounds; ++round) {
-    fraction =
-        std::min(start_fraction, fraction * std::pow(target / size, 1.0 / (1.0 + growth)));
+    fraction = std::min(1.0, fraction * std::pow(target / size, 1.0 / (1.0 + growth)));
     Thinning candidate = Subsample(points, fraction, options, num_threads);
     ++probes;
     size = ProblemSize(candidate, n);
@@ -108,6 +98,30 @@ Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeO
   }
   best.probes = probes;
   return best;
+}
+
+}  // namespace
+
+Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeOptions& options,
+                        int num_threads) {
+  const int n = static_cast<int>(points.size());
+  NeighborhoodSize whole;
+  Thinning chosen = WithinBudget(points, options, num_threads, &whole);
+  if (!NoiseUnreadable(whole, options)) return chosen;
+  // Shrunk from the budget's choice, whose probes are cheaper than the whole cloud's: the
+  // readable size depends on the surface and the noise, not on n.
+  const auto readable = [&](const Thinning& thinning) {
+    return thinning.size.read_sigma <= kReadableRatio * thinning.size.spacing &&
+           ProblemSize(thinning, n) <= options.max_problem_size;
+  };
+  const int probes = chosen.probes;
+  double fraction = chosen.rows.empty() ? 1.0 : static_cast<double>(chosen.rows.size()) / n;
+  for (int round = 1; round <= kMaxReadableRounds && !readable(chosen); ++round) {
+    fraction *= kReadableStep;
+    chosen = Subsample(points, fraction, options, num_threads);
+    chosen.probes = probes + round;
+  }
+  return chosen;
 }
 
 }  // namespace lpd::solvers

@@ -14,7 +14,7 @@
 // (WideNoiseFactor), the cloud is thinned until the probe reads under kReadableRatio
 // spacings, so that its neighbourhoods span more noise deviations (a thin cylinder of radius
 // 2 noise deviations at 50,000 points: P2M x 1e4 4.26 -> 1.86; docs/method.md, "Noise the
-// probe cannot read"). The budget then applies to that subsample.
+// probe cannot read"). That search starts from the budget's choice, whose probes are cheap.
 #ifndef LPD_SOLVERS_THINNING_H_
 #define LPD_SOLVERS_THINNING_H_
 

@@ -177,6 +177,12 @@ TEST(ChooseThinning, WhereTheProbeCannotReadAThinPartsNoiseASubsampleItReadsIsSo
   // Without the widening for wide noise (the paper's k rule) the whole cloud is solved.
   options.wide_noise = false;
   EXPECT_TRUE(ChooseThinning(noisy.points, options, 2).rows.empty());
+  // Past the budget the search starts from the budget's subsample and meets both bars.
+  options.wide_noise = true;
+  options.max_problem_size = 8e5;
+  const Thinning budgeted = ChooseThinning(noisy.points, options, 2);
+  EXPECT_LE(budgeted.size.read_sigma, kReadableRatio * budgeted.size.spacing);
+  EXPECT_LE(static_cast<double>(budgeted.rows.size()) * budgeted.size.k, 8e5);
 }
 
 }  // namespace
