@@ -46,13 +46,13 @@ bool NoiseUnreadable(const NeighborhoodSize& size, const NeighborhoodSizeOptions
 }
 
 // The whole cloud where n k meets the budget, else the largest subsample found that does;
-// `whole_size`: the whole cloud's probe.
+// `whole_unreadable`: whether the probe cannot read the whole cloud's noise.
 Thinning WithinBudget(const energy::PointList& points, const NeighborhoodSizeOptions& options,
-                      int num_threads, NeighborhoodSize* whole_size) {
+                      int num_threads, bool* whole_unreadable) {
   const int n = static_cast<int>(points.size());
   Thinning whole;
   whole.size = ChooseNeighborhoodSize(points, options, num_threads);
-  *whole_size = whole.size;
+  *whole_unreadable = NoiseUnreadable(whole.size, options);
   const double budget = options.max_problem_size;
   double size = ProblemSize(whole, n);
   int probes = 1;
@@ -105,9 +105,9 @@ Thinning WithinBudget(const energy::PointList& points, const NeighborhoodSizeOpt
 Thinning ChooseThinning(const energy::PointList& points, const NeighborhoodSizeOptions& options,
                         int num_threads) {
   const int n = static_cast<int>(points.size());
-  NeighborhoodSize whole;
-  Thinning chosen = WithinBudget(points, options, num_threads, &whole);
-  if (!NoiseUnreadable(whole, options)) return chosen;
+  bool unreadable = false;
+  Thinning chosen = WithinBudget(points, options, num_threads, &unreadable);
+  if (!unreadable) return chosen;
   // Shrunk from the budget's choice, whose probes are cheaper than the whole cloud's: the
   // readable size depends on the surface and the noise, not on n.
   const auto readable = [&](const Thinning& thinning) {
