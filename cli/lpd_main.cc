@@ -16,6 +16,7 @@
 #include "cli/denoise_flags.h"
 #include "io/interruption.h"
 #include "io/out_of_memory.h"
+#include "lpd/denoise.h"
 #include "lpd/parameters.h"
 
 namespace {
@@ -65,7 +66,7 @@ const std::map<std::string, Command>& Commands() {
 
 void PrintUsage() {
   std::printf("lpd %s: robust point-set denoising through line processes (Wei et al. 2023)\n\n",
-              LPD_GIT_REVISION);
+              lpd::Version().c_str());
   for (const auto& [name, command] : Commands()) {
     std::printf("  %-40s %s\n", command.usage, command.summary);
   }

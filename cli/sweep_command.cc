@@ -9,6 +9,7 @@
 #include "cli/denoise_flags.h"
 #include "experiments/sweep/sweep_config.h"
 #include "experiments/sweep/sweep_runner.h"
+#include "lpd/source_revision.h"
 
 DEFINE_string(results_dir, "",
               "where results.jsonl and results.csv go (default: results/NAME, NAME from the "
@@ -24,7 +25,7 @@ int RunSweepCommand(const std::vector<std::string>& arguments) {
   options.results_directory = FLAGS_results_dir.empty() ? "results/" + config.name
                                                         : FLAGS_results_dir;
   options.num_threads = FLAGS_threads;
-  options.git_revision = LPD_GIT_REVISION;
+  options.git_revision = SourceRevision();
   options.dry_run = FLAGS_dry_run;
   options.progress = [](const std::string& message) {
     std::fprintf(stderr, "%s\n", message.c_str());

@@ -8,6 +8,7 @@
 #include "lpd/options.h"
 #include "lpd/parameters.h"
 #include "lpd/presets.h"
+#include "lpd/source_revision.h"
 #include "solvers/denoise_point_set.h"
 
 namespace lpd {
@@ -136,6 +137,6 @@ Result Denoise(const PointList& points, const Options& options, const PointList*
   return MakeResult(run, resolved);
 }
 
-std::string Version() { return std::string(LPD_VERSION) + " (" + LPD_GIT_REVISION + ")"; }
+std::string Version() { return std::string(LPD_VERSION) + " (" + SourceRevision() + ")"; }
 
 }  // namespace lpd
