@@ -184,11 +184,10 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
                                                  &solved_points);
   }
   CheckFitsInMemory(static_cast<int>(solved_points.size()), problem_options.k);
-  // Solved whole, the problem's points are the probe's: its search is reused.
-  const energy::SplitSearch* probe_search =
-      solved_points.size() == ordered_points.size() ? state.neighborhood.split_search.get()
-                                                    : nullptr;
-  state.problem = energy::BuildProblem(solved_points, problem_options, threads, probe_search);
+  // The problem's points are those the chosen probe searched (the whole cloud, or the
+  // subsample in the same order): its search is reused.
+  state.problem = energy::BuildProblem(solved_points, problem_options, threads,
+                                       state.neighborhood.split_search.get());
   state.neighborhood.split_search.reset();
   state.neighborhood.k = state.problem.k();
   state.setup_seconds = SecondsSince(start);
