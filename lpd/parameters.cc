@@ -411,8 +411,8 @@ std::vector<Parameter> FinalStepParameters() {
               {kFinal,
                "rounds of repulsion between nearest output points within their tangent planes, "
                "each point then following its own fitted surface: the output's spacing evens "
-               "out instead of keeping the noise along the surface (0: off; 10 is measured in "
-               "docs/experiments.md)"},
+               "out instead of keeping the noise along the surface (0: off)",
+               "", "0"},
               [](O& o) -> int& { return o.final_step.even_spacing_rounds; }),
       Flag("offset_feedback", kBoth,
            {kFinal,

@@ -12,7 +12,7 @@ the table keeps, per noise level and size, the setting with the lowest mean CD o
 
 Usage:
   scripts/learned_benchmark.py [--meshes FILE_OR_DIR ...] [--sizes 10000 50000]
-                               [--sigmas 0.01 0.02 0.03] [--no-thin] [--even-spacing N]
+                               [--sigmas 0.01 0.02 0.03] [--no-thin]
                                [--variant NAME=VALUE[,VALUE...] ...] [--results DIR]
   scripts/learned_benchmark.py --table-only --results DIR
 Default meshes: every mesh of ${LPD_DATA:-../shared/data}/meshes except the 8-vertex cube,
@@ -194,8 +194,6 @@ def main():
     parser.add_argument("--results", default="results/learned_benchmark")
     parser.add_argument("--threads", type=int, default=0, help="0: all cores")
     parser.add_argument("--table-only", action="store_true", help="only print the tables")
-    parser.add_argument("--even-spacing", type=int, default=0, metavar="N",
-                        help="also run lpd with --even_spacing=N")
     parser.add_argument("--variant", action="append", default=[], metavar="NAME=VALUES",
                         help="also run lpd with --NAME=VALUE for each of the comma-separated "
                              "values (repeatable), e.g. k_radius_sigmas=3.5,4.6")
@@ -206,10 +204,7 @@ def main():
         meshes = expand(args.meshes) if args.meshes else default_meshes()
         results.mkdir(parents=True, exist_ok=True)
         config = results / "learned_benchmark.yaml"
-        # --even-spacing N is the variant even_spacing=N.
-        variants = ([f"even_spacing={args.even_spacing}"] if args.even_spacing else []) + \
-            args.variant
-        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin, variants)
+        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin, args.variant)
         command = [args.lpd, "sweep", str(config), f"--results_dir={results}"]
         if args.threads:
             command.append(f"--threads={args.threads}")
