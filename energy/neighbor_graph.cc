@@ -69,8 +69,11 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   // Without a second search, each point's k nearest candidates on its own side, in case its
   // region turns out thin.
   std::vector<int> own_side(split_sheets && !wide ? static_cast<size_t>(n) * k : 0);
+  // The earlier search holds the nearest `searched` first in each row; its splits are
+  // those judged here when made over as many points.
   const bool reuse = split_sheets && searched_before != nullptr &&
-                     searched_before->searched == searched && searched_before->num_points() == n;
+                     searched_before->searched >= searched && searched_before->num_points() == n;
+  const bool reuse_splits = reuse && searched_before->split_points == searched;
   auto visit = [&](int i, const int* nearest, const double*, int found) {
     thread_local std::vector<int> members;
     Members(i, nearest, found, searched, &members);
@@ -79,7 +82,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     // The earlier split was over `nearest` as found: the same points in the same order
     // as `members` when p_i came first.
     const SheetSplit split =
-        reuse && nearest[0] == i
+        reuse_splits && nearest[0] == i
             ? searched_before->splits[i]
             : SplitSheets(points, members.data(), static_cast<int>(members.size()));
     separation[i] = static_cast<float>(split.separation);

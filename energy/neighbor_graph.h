@@ -53,8 +53,8 @@ enum class SplitNeighborhood { kCandidates, kSplitPoints };
 // lie on two sheets of a thin part (sheet_split.h), so that a fit does not average the two
 // sides, the thin regions grown as `growth` says and the splits judged on `judged_on`.
 // `searched`, when given, must come from a search over these same points; where it searched
-// as many points as the split needs, the graph takes its lists and splits instead of
-// searching again (same result).
+// as many points as the split needs, the graph takes its lists instead of searching again,
+// and its splits where they were made over as many points (same result).
 // Requires points.size() >= k + 1 and k >= 1; throws std::invalid_argument otherwise.
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
                                  bool split_sheets = false,

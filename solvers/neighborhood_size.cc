@@ -157,22 +157,28 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   std::vector<double> alpha(queries);
   // The split of each probe's wider neighbourhood into the two sides of a thin part.
   std::vector<energy::SheetSplit> splits(options.split_sheets ? queries : 0);
-  const int searched =
+  const int split_points =
       options.split_sheets ? std::min(n, std::max(k + 1, energy::kSheetSplitPoints)) : k + 1;
   // Query q probes input point i(q), spread evenly over the (Morton-ordered) points.
   auto point_of = [n, queries](int query) {
     return static_cast<int>(static_cast<int64_t>(query) * n / queries);
   };
-  // With every point probed, the wider searches and their splits are kept for the graph.
+  // With every point probed, the wider searches and their splits are kept for the graph,
+  // searched as far as the graph may need: the first split_points of them are what a search
+  // of split_points finds.
   std::shared_ptr<energy::SplitSearch> kept;
+  int searched = split_points;
   if (options.split_sheets && queries == n) {
+    searched = std::max(split_points, std::min(n, options.max_k + 1));
     kept = std::make_shared<energy::SplitSearch>();
     kept->searched = searched;
+    kept->split_points = split_points;
     kept->nearest.resize(static_cast<size_t>(n) * searched);
   }
   auto probe = [&](int query, const int* nearest, const double*, int found) {
     const int i = point_of(query);
     if (kept) std::copy_n(nearest, found, kept->nearest.data() + static_cast<size_t>(i) * searched);
+    found = std::min(found, split_points);
     // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];

@@ -2,6 +2,7 @@
 // form: sigma along the normal, and one point per 1/n of area.
 #include "solvers/neighborhood_size.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -120,8 +121,9 @@ TEST(NeighborhoodSize, StaysWithinItsBoundsAndRefusesTooFewPoints) {
 
 // The probe keeps its wider searches and splits; a graph built from them is the graph built
 // by searching again: on two sheets 4 noise deviations apart (thin regions, split), with a few
-// duplicated points (whose search need not find themselves first), for a k whose split search
-// is the probe's (2k + 1 <= 128) and one whose is wider (not reused).
+// duplicated points (whose search need not find themselves first), for k whose split search
+// is the probe's (2k + 1 <= 128), k whose search the probe's holds (up to max_k + 1 = 131
+// points, the splits made again) and k past it (not reused).
 TEST(NeighborhoodSize, TheGraphFromTheProbesSearchIsTheGraphSearchedAgain) {
   const experiments::ProceduralShape sheets =
       experiments::MakeShape(experiments::ParseShapeSpec("sheets:size=1,gap=0.02"));
@@ -135,11 +137,13 @@ TEST(NeighborhoodSize, TheGraphFromTheProbesSearchIsTheGraphSearchedAgain) {
   ASSERT_NE(size.split_search, nullptr);
   EXPECT_EQ(size.split_search->num_points(), static_cast<int>(points.size()));
   EXPECT_GT(size.two_sheet_fraction, 0.5);
-  // Judged on kSheetSplitPoints, k = 70 and 127 take the probe's lists too (the thin points'
-  // 2k + 1 candidates from a second search); k = 130 needs more than the probe found.
+  EXPECT_EQ(size.split_search->searched, 131);
+  // Judged on kSheetSplitPoints, k = 70 and 127 take the probe's lists and splits too (the
+  // thin points' 2k + 1 candidates from a second search), k = 130 its lists; k = 140 needs
+  // more than the probe found. Judged on 2k + 1, k = 64 and 65 take its lists.
   for (const auto judged_on :
        {energy::SplitNeighborhood::kCandidates, energy::SplitNeighborhood::kSplitPoints}) {
-    for (const int k : {20, 63, 70, 127, 130}) {
+    for (const int k : {20, 63, 64, 65, 66, 70, 127, 130, 140}) {
       energy::ProblemOptions options;
       options.k = k;
       options.split_neighborhood = judged_on;
@@ -153,6 +157,21 @@ TEST(NeighborhoodSize, TheGraphFromTheProbesSearchIsTheGraphSearchedAgain) {
   NeighborhoodSizeOptions unsplit;
   unsplit.split_sheets = false;
   EXPECT_EQ(ChooseNeighborhoodSize(points, unsplit, 2).split_search, nullptr);
+  // How far the probe searches for the graph changes none of its readings.
+  NeighborhoodSizeOptions wide;
+  wide.max_k = 400;
+  const NeighborhoodSize widely = ChooseNeighborhoodSize(points, wide, 2);
+  EXPECT_EQ(widely.split_search->searched, 401);
+  EXPECT_EQ(widely.read_sigma, size.read_sigma);
+  EXPECT_EQ(widely.noise_sigma, size.noise_sigma);
+  EXPECT_EQ(widely.spacing, size.spacing);
+  EXPECT_EQ(widely.two_sheet_fraction, size.two_sheet_fraction);
+  EXPECT_EQ(widely.thin_candidate_fraction, size.thin_candidate_fraction);
+  for (int i = 0; i < size.split_search->num_points(); ++i) {
+    const int* nearest = size.split_search->NearestOf(i);
+    ASSERT_TRUE(std::equal(nearest, nearest + 131, widely.split_search->NearestOf(i)))
+        << "point " << i;
+  }
 }
 
 }  // namespace
