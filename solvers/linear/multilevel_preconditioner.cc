@@ -129,22 +129,32 @@ void MultilevelPreconditioner::UpdateBlockInverses(int l, int num_threads) {
 #pragma omp parallel num_threads(ThreadsForRows(level.size, num_threads))
   {
     Eigen::MatrixXd block;
+    Eigen::LLT<Eigen::MatrixXd> factor;
 #pragma omp for schedule(static)
     for (int g = 0; g < aggregates.count; ++g) {
-      const int first = aggregates.child_offsets[g];
-      const int size = aggregates.child_offsets[g + 1] - first;
+      const int* children = aggregates.children.data() + aggregates.child_offsets[g];
+      const int size = aggregates.child_offsets[g + 1] - aggregates.child_offsets[g];
+      const auto [lowest, highest] = std::minmax_element(children, children + size);
       block.setZero(size, size);
       for (int p = 0; p < size; ++p) {
-        const int i = aggregates.children[first + p];
-        for (int e = a.row_offsets[i]; e < a.row_offsets[i + 1]; ++e) {
-          const int j = a.columns[e];
-          if (aggregates.parent[j] == g) block(p, level.position[j]) = a.values[e];
+        // The block's columns lie in [lowest, highest], a short stretch of the sorted row
+        // (an aggregate gathers nearby points), found by bisection.
+        const int i = children[p];
+        const int* row_end = a.columns.data() + a.row_offsets[i + 1];
+        for (const int* column = std::lower_bound(a.columns.data() + a.row_offsets[i], row_end,
+                                                  *lowest);
+             column != row_end && *column <= *highest; ++column) {
+          const int j = *column;
+          if (aggregates.parent[j] == g) {
+            block(p, level.position[j]) = a.values[column - a.columns.data()];
+          }
         }
       }
       // A principal block of an SPD matrix is SPD.
+      factor.compute(block);
       Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           level.block_inverses.data() + level.block_offsets[g], size, size) =
-          block.llt().solve(Eigen::MatrixXd::Identity(size, size));
+          factor.solve(Eigen::MatrixXd::Identity(size, size));
     }
   }
 }
