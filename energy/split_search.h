@@ -1,11 +1,12 @@
 // lpd: the wider neighbourhoods the sheet split is judged on, searched once.
 //
 // The noise probe (solvers/neighborhood_size.h) searches the kSheetSplitPoints nearest of
-// every point (or the max_k + 1 nearest, if more) and splits each point's kSheetSplitPoints
-// nearest (sheet_split.h). BuildNeighborGraph needs that search whenever it needs at most as
-// many neighbours (k <= max_k), and the same splits whenever it judges them on
-// kSheetSplitPoints (always where 2k + 1 <= kSheetSplitPoints). Kept from the probe, they
-// spare the graph a second k-d tree search over the same points.
+// every point (or the max_k + 1 nearest, if more, up to 2 kSheetSplitPoints) and splits each
+// point's kSheetSplitPoints nearest (sheet_split.h). BuildNeighborGraph needs that search
+// whenever it needs no more neighbours (k <= max_k at the default max_k), and the same
+// splits whenever it judges them on kSheetSplitPoints (always where 2k + 1 <=
+// kSheetSplitPoints). Kept from the probe, they spare the graph a second k-d tree search
+// over the same points.
 #ifndef LPD_ENERGY_SPLIT_SEARCH_H_
 #define LPD_ENERGY_SPLIT_SEARCH_H_
 

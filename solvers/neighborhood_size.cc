@@ -164,12 +164,13 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     return static_cast<int>(static_cast<int64_t>(query) * n / queries);
   };
   // With every point probed, the wider searches and their splits are kept for the graph,
-  // searched as far as the graph may need: the first split_points of them are what a search
-  // of split_points finds.
+  // searched as far as the graph may need (up to 2 kSheetSplitPoints, 1 KB a point): the
+  // first split_points of them are what a search of split_points finds.
   std::shared_ptr<energy::SplitSearch> kept;
   int searched = split_points;
   if (options.split_sheets && queries == n) {
-    searched = std::max(split_points, std::min(n, options.max_k + 1));
+    searched = std::max(split_points,
+                        std::min({n, options.max_k + 1, 2 * energy::kSheetSplitPoints}));
     kept = std::make_shared<energy::SplitSearch>();
     kept->searched = searched;
     kept->split_points = split_points;

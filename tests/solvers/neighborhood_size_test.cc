@@ -157,11 +157,12 @@ TEST(NeighborhoodSize, TheGraphFromTheProbesSearchIsTheGraphSearchedAgain) {
   NeighborhoodSizeOptions unsplit;
   unsplit.split_sheets = false;
   EXPECT_EQ(ChooseNeighborhoodSize(points, unsplit, 2).split_search, nullptr);
-  // How far the probe searches for the graph changes none of its readings.
+  // How far the probe searches for the graph (at most 256 points) changes none of its
+  // readings.
   NeighborhoodSizeOptions wide;
   wide.max_k = 400;
   const NeighborhoodSize widely = ChooseNeighborhoodSize(points, wide, 2);
-  EXPECT_EQ(widely.split_search->searched, 401);
+  EXPECT_EQ(widely.split_search->searched, 256);
   EXPECT_EQ(widely.read_sigma, size.read_sigma);
   EXPECT_EQ(widely.noise_sigma, size.noise_sigma);
   EXPECT_EQ(widely.spacing, size.spacing);
