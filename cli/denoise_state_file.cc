@@ -93,8 +93,8 @@ class Reader {
   }
   // Of the bytes read so far.
   uint64_t checksum() const { return checksum_.value(); }
-  template <typename T>
-  void Vector(uint64_t count, std::vector<T>* values) {
+  template <typename T, typename Allocator>
+  void Vector(uint64_t count, std::vector<T, Allocator>* values) {
     if (count > remaining_ / sizeof(T)) Fail("truncated state file");
     values->resize(count);
     Array(values->data(), count);

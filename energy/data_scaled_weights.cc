@@ -26,7 +26,7 @@ bool DataScaledWeights::IsValid(std::string* error) const {
 }
 
 EnergyParameters ScaleWeightsToData(const Problem& problem, const EnergyParameters& parameters,
-                                    const DataScaledWeights& weights) {
+                                    const DataScaledWeights& weights, int num_threads) {
   EnergyParameters scaled = parameters;
   if (problem.num_points() == 0) return scaled;
   if (weights.fit_balance > 0.0) {
@@ -36,7 +36,7 @@ EnergyParameters ScaleWeightsToData(const Problem& problem, const EnergyParamete
     EnergyParameters unit = scaled;
     unit.lambda = 1.0;
     scaled.lambda =
-        weights.smoothing_balance / MedianSmoothnessToStitchingRatio(problem, unit);
+        weights.smoothing_balance / MedianSmoothnessToStitchingRatio(problem, unit, num_threads);
   }
   return scaled;
 }

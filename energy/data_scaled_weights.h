@@ -33,9 +33,10 @@ struct DataScaledWeights {
 };
 
 // `parameters` with eta set from fit_balance and lambda from smoothing_balance (each only
-// when its ratio is > 0); mu_l and mu_m unchanged. Deterministic in `problem`.
+// when its ratio is > 0); mu_l and mu_m unchanged. Deterministic in `problem`, whatever
+// `num_threads`.
 EnergyParameters ScaleWeightsToData(const Problem& problem, const EnergyParameters& parameters,
-                                    const DataScaledWeights& weights);
+                                    const DataScaledWeights& weights, int num_threads = 1);
 
 }  // namespace lpd::energy
 

@@ -68,7 +68,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   std::vector<SheetSplit> splits(wide ? n : 0);
   // Without a second search, each point's k nearest candidates on its own side, in case its
   // region turns out thin.
-  std::vector<int> own_side(split_sheets && !wide ? static_cast<size_t>(n) * k : 0);
+  LargeVector<int> own_side(split_sheets && !wide ? static_cast<size_t>(n) * k : 0);
   // The earlier search holds the nearest `searched` first in each row; its splits are
   // those judged here when made over as many points.
   const bool reuse = split_sheets && searched_before != nullptr &&
@@ -106,6 +106,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     // candidates on p_i's own side. The regions are judged on the unsplit N first.
     std::vector<char> is_thin(n, 0), may_grow(n, 0);
     size_t seeds = 0;
+#pragma omp parallel for schedule(static) num_threads(num_threads) reduction(+ : seeds)
     for (int i = 0; i < n; ++i) {
       RegionSplits region;
       region.Add(separation[i], within_kurtosis[i], footprint_difference[i]);
@@ -161,49 +162,72 @@ void BuildPairs(NeighborGraph* graph, int num_threads) {
   const int n = graph->num_points();
   const int k = graph->k;
   // The pairs {i, j} in increasing (min, max) order, each once: the larger indices are
-  // bucketed by the smaller one, and each bucket is sorted on its own.
-  std::vector<size_t> bucket_offsets(static_cast<size_t>(n) + 1, 0);
-  for (int i = 0; i < n; ++i) {
-    const int* nbrs = graph->NeighborsOf(i);
-    for (int a = 0; a < k; ++a) ++bucket_offsets[std::min(i, nbrs[a]) + 1];
-  }
-  for (int i = 0; i < n; ++i) bucket_offsets[i + 1] += bucket_offsets[i];
-  std::vector<int> larger(bucket_offsets[n]);
-  std::vector<size_t> bucket_fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
+  // bucketed by the smaller one, and each bucket is sorted on its own (so the order in which
+  // the threads fill a bucket does not matter).
+  std::vector<int> bucket_size(n, 0);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
     const int* nbrs = graph->NeighborsOf(i);
     for (int a = 0; a < k; ++a) {
-      larger[bucket_fill[std::min(i, nbrs[a])]++] = std::max(i, nbrs[a]);
+#pragma omp atomic
+      ++bucket_size[std::min(i, nbrs[a])];
     }
   }
-  std::vector<int> distinct(n);
+  std::vector<size_t> bucket_offsets(static_cast<size_t>(n) + 1, 0);
+  for (int i = 0; i < n; ++i) bucket_offsets[i + 1] = bucket_offsets[i] + bucket_size[i];
+  LargeVector<int> larger(bucket_offsets[n]);
+  std::vector<size_t> bucket_fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+  for (int i = 0; i < n; ++i) {
+    const int* nbrs = graph->NeighborsOf(i);
+    for (int a = 0; a < k; ++a) {
+      size_t slot;
+#pragma omp atomic capture
+      slot = bucket_fill[std::min(i, nbrs[a])]++;
+      larger[slot] = std::max(i, nbrs[a]);
+    }
+  }
+  // distinct[i]: the pairs {i, j} with i < j; below_count[j]: those with i < j.
+  std::vector<int> distinct(n), below_count(n, 0);
 #pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
     const auto first = larger.begin() + bucket_offsets[i];
     std::sort(first, larger.begin() + bucket_offsets[i + 1]);
     distinct[i] = static_cast<int>(
         std::unique(first, larger.begin() + bucket_offsets[i + 1]) - first);
-  }
-  size_t num_pairs = 0;
-  for (int i = 0; i < n; ++i) num_pairs += distinct[i];
-  graph->pairs.resize(num_pairs);
-  size_t next = 0;
-  for (int i = 0; i < n; ++i) {
     for (int b = 0; b < distinct[i]; ++b) {
-      graph->pairs[next++] = {i, larger[bucket_offsets[i] + b]};
+#pragma omp atomic
+      ++below_count[first[b]];
     }
   }
+  std::vector<size_t> pair_offsets(static_cast<size_t>(n) + 1, 0);
   graph->incident_offsets.assign(n + 1, 0);
-  for (const auto& pair : graph->pairs) {
-    ++graph->incident_offsets[pair[0] + 1];
-    ++graph->incident_offsets[pair[1] + 1];
+  for (int i = 0; i < n; ++i) {
+    pair_offsets[i + 1] = pair_offsets[i] + distinct[i];
+    graph->incident_offsets[i + 1] = graph->incident_offsets[i] + below_count[i] + distinct[i];
   }
-  for (int i = 0; i < n; ++i) graph->incident_offsets[i + 1] += graph->incident_offsets[i];
+  graph->pairs.resize(pair_offsets[n]);
   graph->incident_pairs.resize(graph->incident_offsets[n]);
-  std::vector<int> fill(graph->incident_offsets.begin(), graph->incident_offsets.end() - 1);
-  for (size_t p = 0; p < graph->pairs.size(); ++p) {
-    graph->incident_pairs[fill[graph->pairs[p][0]]++] = static_cast<int>(p);
-    graph->incident_pairs[fill[graph->pairs[p][1]]++] = static_cast<int>(p);
+  // Point x's incident pairs in increasing pair order: first the pairs {a, x} with a < x
+  // (filled through a, then sorted), then its own pairs {x, b}.
+  std::vector<int> below_fill(graph->incident_offsets.begin(), graph->incident_offsets.end() - 1);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+  for (int i = 0; i < n; ++i) {
+    for (int b = 0; b < distinct[i]; ++b) {
+      const int p = static_cast<int>(pair_offsets[i]) + b;
+      const int j = larger[bucket_offsets[i] + b];
+      graph->pairs[p] = {i, j};
+      int slot;
+#pragma omp atomic capture
+      slot = below_fill[j]++;
+      graph->incident_pairs[slot] = p;
+      graph->incident_pairs[graph->incident_offsets[i] + below_count[i] + b] = p;
+    }
+  }
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+  for (int i = 0; i < n; ++i) {
+    int* first = graph->incident_pairs.data() + graph->incident_offsets[i];
+    std::sort(first, first + below_count[i]);
   }
 }
 

@@ -13,19 +13,20 @@
 
 #include "energy/point3.h"
 #include "energy/split_search.h"
+#include "energy/large_vector.h"
 
 namespace lpd::energy {
 
 struct NeighborGraph {
   int k = 0;
   // N(i) = neighbors[i * k, (i + 1) * k), sorted by increasing distance.
-  std::vector<int> neighbors;
+  LargeVector<int> neighbors;
   // M: pairs[p] = {i, j}, i < j, sorted lexicographically.
-  std::vector<std::array<int, 2>> pairs;
+  LargeVector<std::array<int, 2>> pairs;
   // Pairs incident to point i: incident_pairs[incident_offsets[i], incident_offsets[i + 1]),
   // in increasing order of the partner point (a consequence of the pairs' order).
   std::vector<int> incident_offsets;
-  std::vector<int> incident_pairs;
+  LargeVector<int> incident_pairs;
 
   int num_points() const { return k > 0 ? static_cast<int>(neighbors.size()) / k : 0; }
   int num_pairs() const { return static_cast<int>(pairs.size()); }

@@ -39,19 +39,20 @@ double SampleSpacing(const Problem& problem) {
   return SpacingFromMedianAlpha(MedianAlpha(problem), problem.k());
 }
 
-void ComputeWeights(double min_squared_distance_ratio, Problem* problem) {
+void ComputeWeights(double min_squared_distance_ratio, Problem* problem, int num_threads) {
   const int n = problem->num_points();
   const int k = problem->k();
   const PointList& p = problem->points;
-  problem->alpha.assign(n, 0.0);
-  double alpha_sum = 0.0;
+  problem->alpha.resize(n);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
     const int* nbrs = problem->graph.NeighborsOf(i);
     double sum = 0.0;
     for (int a = 0; a < k; ++a) sum += (p[i] - p[nbrs[a]]).squaredNorm();
     problem->alpha[i] = sum / k;
-    alpha_sum += problem->alpha[i];
   }
+  double alpha_sum = 0.0;  // in index order, the same sum for any thread count
+  for (int i = 0; i < n; ++i) alpha_sum += problem->alpha[i];
   const double mean_alpha = alpha_sum / n;
   if (!(mean_alpha > 0.0)) {
     throw std::invalid_argument(
@@ -62,8 +63,10 @@ void ComputeWeights(double min_squared_distance_ratio, Problem* problem) {
   for (double& a : problem->alpha) a = std::max(a, floor);
 
   const auto& pairs = problem->graph.pairs;
-  problem->beta.resize(pairs.size());
-  for (size_t q = 0; q < pairs.size(); ++q) {
+  const int num_pairs = problem->graph.num_pairs();
+  problem->beta.resize(num_pairs);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+  for (int q = 0; q < num_pairs; ++q) {
     const int i = pairs[q][0];
     const int j = pairs[q][1];
     const double squared_distance = std::max((p[i] - p[j]).squaredNorm(), floor);
@@ -94,7 +97,7 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,
                                      options.split_sheets, searched,
                                      options.thin_region_growth, options.split_neighborhood);
-  ComputeWeights(options.min_squared_distance_ratio, &problem);
+  ComputeWeights(options.min_squared_distance_ratio, &problem, num_threads);
   return problem;
 }
 

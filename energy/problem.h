@@ -14,6 +14,7 @@
 
 #include "energy/neighbor_graph.h"
 #include "energy/normalization.h"
+#include "energy/large_vector.h"
 
 namespace lpd::energy {
 
@@ -39,7 +40,7 @@ struct Problem {
   PointList points;       // p_i, normalized (centroid 0, bounding-box diagonal 1)
   NeighborGraph graph;    // N and M
   std::vector<double> alpha;  // alpha_i, one per point
-  std::vector<double> beta;   // beta_ij, one per pair of M (graph.pairs order)
+  LargeVector<double> beta;  // beta_ij, one per pair of M (graph.pairs order)
   // The rounding noise of the input's coordinate grid, normalized: the floor of every
   // residual scale (energy/coordinate_quantization.h).
   double quantization_noise = 0.0;
@@ -66,8 +67,8 @@ double SpacingFromMedianAlpha(double median_alpha, int k);
 double SampleSpacing(const Problem& problem);
 
 // Fills alpha and beta from problem->points and problem->graph (used by BuildProblem and by
-// tests that construct graphs by hand).
-void ComputeWeights(double min_squared_distance_ratio, Problem* problem);
+// tests that construct graphs by hand), with `num_threads` threads.
+void ComputeWeights(double min_squared_distance_ratio, Problem* problem, int num_threads = 1);
 
 }  // namespace lpd::energy
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "energy/sheet_split.h"
+#include "energy/large_vector.h"
 
 namespace lpd::energy {
 
@@ -21,7 +22,7 @@ struct SplitSearch {
   int searched = 0;
   // nearest[i * searched + a]: the a-th nearest of point i (NearestNeighbors order). Its
   // first m entries are those a search of the m nearest finds, in the same order.
-  std::vector<int> nearest;
+  LargeVector<int> nearest;
   // splits[i] = SplitSheets over the first split_points of nearest[i * searched, ...).
   int split_points = 0;
   std::vector<SheetSplit> splits;

@@ -6,10 +6,11 @@
 namespace lpd::energy {
 
 double MedianSmoothnessToStitchingRatio(const Problem& problem,
-                                        const EnergyParameters& parameters) {
+                                        const EnergyParameters& parameters, int num_threads) {
   const int n = problem.num_points();
   if (n == 0) return 0.0;
   std::vector<double> ratio(n);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
     double smoothness = 0.0;
     for (int e = problem.graph.incident_offsets[i]; e < problem.graph.incident_offsets[i + 1];

@@ -17,9 +17,10 @@
 
 namespace lpd::energy {
 
-// The median over the points of rho_i (0 for an empty problem).
+// The median over the points of rho_i (0 for an empty problem), with `num_threads` threads.
 double MedianSmoothnessToStitchingRatio(const Problem& problem,
-                                        const EnergyParameters& parameters);
+                                        const EnergyParameters& parameters,
+                                        int num_threads = 1);
 
 }  // namespace lpd::energy
 

@@ -23,8 +23,9 @@ struct Variables {
   Eigen::VectorXd s;     // S, one per pair
 };
 
-// The initialization of Alg. 1, lines 2-5: H = T = 0, l_ij = m_ij = s_ij = 1.
-Variables InitialVariables(const Problem& problem);
+// The initialization of Alg. 1, lines 2-5: H = T = 0, l_ij = m_ij = s_ij = 1, filled by
+// `num_threads` threads.
+Variables InitialVariables(const Problem& problem, int num_threads = 1);
 
 }  // namespace lpd::energy
 

@@ -52,7 +52,7 @@ class AlternatingRun {
         threads_(settings.num_threads),
         parameters_(settings.energy),
         selectivities_(options.gnc, &state->gnc),
-        smoother_(problem) {
+        smoother_(problem, threads_) {
     // The energy of Eq. (5) at the target selectivities; mu_l may still be replaced by the
     // scale-aware value at the first local step.
     if (!std::isnan(state_.mu_l)) parameters_.mu_l = state_.mu_l;

@@ -206,7 +206,8 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   SolverSettings settings = options.settings;
   settings.energy =
-      energy::ScaleWeightsToData(state->problem, options.settings.energy, options.weights);
+      energy::ScaleWeightsToData(state->problem, options.settings.energy, options.weights,
+                                 options.settings.num_threads);
   SolverSummary summary;
   if (options.solver == Solver::kCeres) {
     if (settings.mu_l_noise_sigmas > 0.0) {  // the joint solve starts from fitted planes
@@ -252,7 +253,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
                              agreement_scale, options.settings.num_threads, &result.projected,
                              &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
-                                         options.final_step);
+                                         options.final_step, options.settings.num_threads);
   // Even spacing and the offset feedback move the output in the normalized frame; outliers
   // stay where they are.
   energy::PointList normalized;

@@ -70,36 +70,45 @@ constexpr double kMaxRadiusRatio = 2.0;
 }  // namespace
 
 PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy::Variables& v,
-                                   double mu_l, const FinalDenoisingOptions& options) {
+                                   double mu_l, const FinalDenoisingOptions& options,
+                                   int num_threads) {
   const int n = problem.num_points();
   const int columns = problem.k() + 1;
   const auto& graph = problem.graph;
   PlaneEvidence evidence;
   evidence.mu.assign(n, mu_l);
   evidence.support.resize(n);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int j = 0; j < n; ++j) evidence.support[j] = v.l.row(j).mean();
   if (options.local_noise_ratio <= 1.0 || n == 0) return evidence;
   // s_j: the robust residual scale of h_j over its own neighbourhood; sigma_j: the median
   // of s over N(j) u {j}, steadier than one median of k + 1 residuals.
   // radius_j: the distance from q_j to its farthest fitting point.
-  std::vector<double> scale(n), region_scale(n), radius(n), values(columns);
-  for (int j = 0; j < n; ++j) {
-    radius[j] = 0.0;
-    for (int a = 0; a < columns; ++a) {
-      const energy::Point3& q = problem.points[graph.FittingPoint(j, a)];
-      values[a] = std::abs(PlaneResidual(v, j, q));
-      radius[j] = std::max(radius[j], (q - problem.points[j]).norm());
+  std::vector<double> scale(n), region_scale(n), radius(n);
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<double> values(columns);
+#pragma omp for schedule(static)
+    for (int j = 0; j < n; ++j) {
+      radius[j] = 0.0;
+      for (int a = 0; a < columns; ++a) {
+        const energy::Point3& q = problem.points[graph.FittingPoint(j, a)];
+        values[a] = std::abs(PlaneResidual(v, j, q));
+        radius[j] = std::max(radius[j], (q - problem.points[j]).norm());
+      }
+      scale[j] = std::max(kMedianAbsToSigma * Median(&values), problem.quantization_noise);
     }
-    scale[j] = std::max(kMedianAbsToSigma * Median(&values), problem.quantization_noise);
-  }
-  for (int j = 0; j < n; ++j) {
-    for (int a = 0; a < columns; ++a) values[a] = scale[graph.FittingPoint(j, a)];
-    region_scale[j] = Median(&values);
+#pragma omp for schedule(static)
+    for (int j = 0; j < n; ++j) {
+      for (int a = 0; a < columns; ++a) values[a] = scale[graph.FittingPoint(j, a)];
+      region_scale[j] = Median(&values);
+    }
   }
   std::vector<double> all = region_scale;
   const double typical = Median(&all);
   all = radius;
   const double typical_radius = Median(&all);
+#pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int j = 0; j < n; ++j) {
     const bool surface_density = radius[j] <= kMaxRadiusRatio * typical_radius;
     const double ratio = typical > 0.0 ? region_scale[j] / typical : 0.0;
@@ -134,7 +143,8 @@ double OutlierScore(const energy::Point3& p, const int* planes, int count,
 }
 
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
-                                  double mu_l, const FinalDenoisingOptions& options) {
+                                  double mu_l, const FinalDenoisingOptions& options,
+                                  int num_threads) {
   const int n = problem.num_points();
   const int k = problem.k();
   const auto& graph = problem.graph;
@@ -143,22 +153,26 @@ PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::
   indicators.feature_score.resize(n);
   indicators.is_outlier.resize(n);
   indicators.is_feature.resize(n);
-  const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options);
-  std::vector<int> fitting_points(k + 1);
-  for (int i = 0; i < n; ++i) {
-    for (int a = 0; a <= k; ++a) fitting_points[a] = graph.FittingPoint(i, a);
-    indicators.outlier_score[i] =
-        OutlierScore(problem.points[i], fitting_points.data(), k + 1, v, evidence);
-    indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
+  const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options, num_threads);
+#pragma omp parallel num_threads(num_threads)
+  {
+    std::vector<int> fitting_points(k + 1);
+#pragma omp for schedule(static)
+    for (int i = 0; i < n; ++i) {
+      for (int a = 0; a <= k; ++a) fitting_points[a] = graph.FittingPoint(i, a);
+      indicators.outlier_score[i] =
+          OutlierScore(problem.points[i], fitting_points.data(), k + 1, v, evidence);
+      indicators.is_outlier[i] = indicators.outlier_score[i] >= options.outlier_fraction;
 
-    const int begin = graph.incident_offsets[i];
-    const int end = graph.incident_offsets[i + 1];
-    int low_m = 0;
-    for (int e = begin; e < end; ++e) {
-      low_m += v.m[graph.incident_pairs[e]] < options.feature_line_threshold;
+      const int begin = graph.incident_offsets[i];
+      const int end = graph.incident_offsets[i + 1];
+      int low_m = 0;
+      for (int e = begin; e < end; ++e) {
+        low_m += v.m[graph.incident_pairs[e]] < options.feature_line_threshold;
+      }
+      indicators.feature_score[i] = end > begin ? static_cast<double>(low_m) / (end - begin) : 0.0;
+      indicators.is_feature[i] = indicators.feature_score[i] > options.feature_fraction;
     }
-    indicators.feature_score[i] = end > begin ? static_cast<double>(low_m) / (end - begin) : 0.0;
-    indicators.is_feature[i] = indicators.feature_score[i] > options.feature_fraction;
   }
   return indicators;
 }

@@ -106,16 +106,19 @@ struct PlaneEvidence {
   std::vector<double> support;
 };
 PlaneEvidence ComputePlaneEvidence(const energy::Problem& problem, const energy::Variables& v,
-                                   double mu_l, const FinalDenoisingOptions& options);
+                                   double mu_l, const FinalDenoisingOptions& options,
+                                   int num_threads = 1);
 
 // The outlier score of the point p (normalized frame) asked of the planes h_j of `planes`
 // (above; `count` of them).
 double OutlierScore(const energy::Point3& p, const int* planes, int count,
                     const energy::Variables& v, const PlaneEvidence& evidence);
 
-// `mu_l`: the selectivity the fitting line processes were computed with.
+// `mu_l`: the selectivity the fitting line processes were computed with. The same result
+// for any `num_threads`.
 PointIndicators ComputeIndicators(const energy::Problem& problem, const energy::Variables& v,
-                                  double mu_l, const FinalDenoisingOptions& options);
+                                  double mu_l, const FinalDenoisingOptions& options,
+                                  int num_threads = 1);
 
 }  // namespace lpd::solvers
 

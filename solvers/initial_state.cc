@@ -67,7 +67,7 @@ energy::Variables InitialState(const energy::Problem& problem,
                                const energy::EnergyParameters& parameters,
                                Initialization initialization, int num_threads, uint64_t seed,
                                const energy::PointList* normals) {
-  energy::Variables v = energy::InitialVariables(problem);
+  energy::Variables v = energy::InitialVariables(problem, num_threads);
   switch (initialization) {
     case Initialization::kZero: return v;
     case Initialization::kPlaneFit:

@@ -18,6 +18,7 @@
 #include "energy/problem.h"
 #include "energy/sheet_split.h"
 #include "energy/split_search.h"
+#include "energy/large_vector.h"
 #include "solvers/median.h"
 #include "solvers/merged_sides.h"
 
@@ -68,7 +69,7 @@ constexpr PlaneReading kPlaneReadings[] = {
 // scaled so that the median of its probed points' own residuals reads s; else empty.
 template <typename PointOf>
 std::vector<double> SideResiduals(const energy::PointList& normalized,
-                                  const std::vector<double>& offsets,
+                                  const energy::LargeVector<double>& offsets,
                                   const std::vector<uint8_t>& split_probe, int k,
                                   int num_threads, const PointOf& point_of,
                                   const std::vector<double>& residuals) {
@@ -152,8 +153,8 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   const int k = std::min(options.probe_k, n - 1);
   const int queries = std::min(n, kMaxProbeQueries);
   // Signed distances of each probe neighbourhood's points from its plane.
-  std::vector<double> offsets(static_cast<size_t>(queries) * (k + 1));
-  std::vector<int> members(offsets.size());
+  energy::LargeVector<double> offsets(static_cast<size_t>(queries) * (k + 1));
+  energy::LargeVector<int> members(offsets.size());
   std::vector<double> alpha(queries);
   // The split of each probe's wider neighbourhood into the two sides of a thin part.
   std::vector<energy::SheetSplit> splits(options.split_sheets ? queries : 0);

@@ -29,7 +29,7 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
                     PointIndicators* query_indicators) {
   const int count = static_cast<int>(queries.size());
   const int neighbors = problem.k() + 1;
-  const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options);
+  const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options, num_threads);
   const int blend = std::min(options.blended_surfaces, neighbors);
   projected->resize(count);
   normals->resize(count);

@@ -35,12 +35,13 @@ bool LinearSolverOptions::IsValid(std::string* error) const {
   return false;
 }
 
-TangentPlaneSmoother::TangentPlaneSmoother(const energy::Problem& problem) : problem_(problem) {
+TangentPlaneSmoother::TangentPlaneSmoother(const energy::Problem& problem, int num_threads)
+    : problem_(problem) {
   const auto& graph = problem.graph;
   const int n = problem.num_points();
   // Row i holds the diagonal and one entry per incident pair. Incident pairs come in
   // increasing partner order, so the row's columns are sorted once the diagonal is placed
-  // between the partners below i and those above.
+  // between the partners below i and those above. AssembleValues writes every value.
   k_.row_offsets.resize(n + 1);
   k_.row_offsets[0] = 0;
   diagonal_entry_.resize(n);
@@ -49,16 +50,16 @@ TangentPlaneSmoother::TangentPlaneSmoother(const energy::Problem& problem) : pro
     k_.row_offsets[i + 1] = k_.row_offsets[i] + degree + 1;
   }
   k_.columns.resize(k_.row_offsets[n]);
-  k_.values.assign(k_.row_offsets[n], 0.0);
+  k_.values.resize(k_.row_offsets[n]);
+  bool sorted = true;
+#pragma omp parallel for schedule(static) num_threads(num_threads) reduction(&& : sorted)
   for (int i = 0; i < n; ++i) {
     int entry = k_.row_offsets[i];
     int previous = -1;
     bool diagonal_placed = false;
     for (int e = graph.incident_offsets[i]; e < graph.incident_offsets[i + 1]; ++e) {
       const int partner = Partner(i, e);
-      if (partner <= previous) {
-        throw std::logic_error("incident pairs of a point must come in increasing partner order");
-      }
+      sorted = sorted && partner > previous;
       previous = partner;
       if (!diagonal_placed && partner > i) {
         diagonal_entry_[i] = entry;
@@ -71,6 +72,9 @@ TangentPlaneSmoother::TangentPlaneSmoother(const energy::Problem& problem) : pro
       diagonal_entry_[i] = entry;
       k_.columns[entry] = i;
     }
+  }
+  if (!sorted) {
+    throw std::logic_error("incident pairs of a point must come in increasing partner order");
   }
 }
 

@@ -53,7 +53,8 @@ struct LinearSolveStats {
 
 class TangentPlaneSmoother {
  public:
-  explicit TangentPlaneSmoother(const energy::Problem& problem);
+  // Lays out K's pattern from the graph, with `num_threads` threads.
+  explicit TangentPlaneSmoother(const energy::Problem& problem, int num_threads = 1);
 
   // Replaces v->t by the solution of Eq. (9) for the current H, M, S.
   LinearSolveStats Update(const energy::EnergyParameters& parameters,

@@ -8,12 +8,16 @@
 
 #include <vector>
 
+#include "energy/large_vector.h"
+
 namespace lpd::solvers {
 
 struct CompressedRows {
   std::vector<int> row_offsets;  // row i's entries are [row_offsets[i], row_offsets[i + 1])
-  std::vector<int> columns;      // sorted within each row
-  std::vector<double> values;
+  // Sorted within each row. Resizing leaves both arrays unwritten: whoever sizes them fills
+  // them.
+  energy::LargeVector<int> columns;
+  energy::LargeVector<double> values;
 
   int num_rows() const { return static_cast<int>(row_offsets.size()) - 1; }
 

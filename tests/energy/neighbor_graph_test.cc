@@ -56,9 +56,35 @@ TEST(NeighborGraph, PairsAreTheSymmetricClosureOnce) {
     }
   }
   for (int count : seen) EXPECT_EQ(count, 2);
-  // In lexicographic order, whatever the thread count.
-  EXPECT_TRUE(std::is_sorted(graph.pairs.begin(), graph.pairs.end()));
-  EXPECT_EQ(BuildNeighborGraph(points, 6, 2).pairs, graph.pairs);
+  // In lexicographic order, each point's pairs in increasing partner order (K's rows rely
+  // on it), and the same lists whatever the thread count.
+  const NeighborGraph two_threads = BuildNeighborGraph(points, 6, 2);
+  for (const NeighborGraph* built : {&graph, &two_threads}) {
+    EXPECT_TRUE(std::is_sorted(built->pairs.begin(), built->pairs.end()));
+    for (int i = 0; i < 200; ++i) {
+      int previous = -1;
+      for (int e = built->incident_offsets[i]; e < built->incident_offsets[i + 1]; ++e) {
+        const auto& pair = built->pairs[built->incident_pairs[e]];
+        const int partner = pair[0] == i ? pair[1] : pair[0];
+        EXPECT_GT(partner, previous) << i;
+        previous = partner;
+      }
+    }
+  }
+  EXPECT_EQ(two_threads.pairs, graph.pairs);
+  EXPECT_EQ(two_threads.incident_offsets, graph.incident_offsets);
+  EXPECT_EQ(two_threads.incident_pairs, graph.incident_pairs);
+}
+
+TEST(NeighborGraph, ThreadsBuildTheSameListsOnALargerCloud) {
+  // Large enough that the threads fill the lists at the same time (in unsorted point order,
+  // so that every point's pairs come from both threads' rows).
+  const PointList points = testing::NoisyPlane(20000, 0.01, 4);
+  const NeighborGraph one = BuildNeighborGraph(points, 8, 1);
+  const NeighborGraph two = BuildNeighborGraph(points, 8, 2);
+  EXPECT_EQ(two.pairs, one.pairs);
+  EXPECT_EQ(two.incident_offsets, one.incident_offsets);
+  EXPECT_EQ(two.incident_pairs, one.incident_pairs);
 }
 
 TEST(NeighborGraph, ExcludesSelfAmongDuplicates) {
