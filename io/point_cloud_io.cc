@@ -326,10 +326,44 @@ PointList ReadOff(const std::string& path, std::istream& in) {
 
 enum class PlyFormat { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
 
+// PLY's scalar types, each under its two names (char / int8, ...).
+enum class PlyScalar { kUnknown, kInt8, kUInt8, kInt16, kUInt16, kInt32, kUInt32, kFloat32,
+                       kFloat64 };
+
+PlyScalar PlyScalarOf(const std::string& type) {
+  static const std::pair<const char*, PlyScalar> kNames[] = {
+      {"char", PlyScalar::kInt8},     {"int8", PlyScalar::kInt8},
+      {"uchar", PlyScalar::kUInt8},   {"uint8", PlyScalar::kUInt8},
+      {"short", PlyScalar::kInt16},   {"int16", PlyScalar::kInt16},
+      {"ushort", PlyScalar::kUInt16}, {"uint16", PlyScalar::kUInt16},
+      {"int", PlyScalar::kInt32},     {"int32", PlyScalar::kInt32},
+      {"uint", PlyScalar::kUInt32},   {"uint32", PlyScalar::kUInt32},
+      {"float", PlyScalar::kFloat32}, {"float32", PlyScalar::kFloat32},
+      {"double", PlyScalar::kFloat64}, {"float64", PlyScalar::kFloat64}};
+  for (const auto& [name, scalar] : kNames) {
+    if (type == name) return scalar;
+  }
+  return PlyScalar::kUnknown;
+}
+
+int PlyScalarSize(PlyScalar scalar) {
+  switch (scalar) {
+    case PlyScalar::kInt8: case PlyScalar::kUInt8: return 1;
+    case PlyScalar::kInt16: case PlyScalar::kUInt16: return 2;
+    case PlyScalar::kInt32: case PlyScalar::kUInt32: case PlyScalar::kFloat32: return 4;
+    case PlyScalar::kFloat64: return 8;
+    case PlyScalar::kUnknown: break;
+  }
+  return 0;
+}
+
 struct PlyProperty {
   std::string name;
   std::string type;        // scalar type, or the item type of a list
   std::string count_type;  // list count type; empty for scalars
+  // The two types parsed once, for the body's values.
+  PlyScalar scalar = PlyScalar::kUnknown;
+  PlyScalar count_scalar = PlyScalar::kUnknown;
 };
 
 struct PlyElement {
@@ -338,40 +372,41 @@ struct PlyElement {
   std::vector<PlyProperty> properties;
 };
 
-int PlyTypeSize(const std::string& type) {
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
-      type == "float" || type == "float32") {
-    return 4;
-  }
-  if (type == "double" || type == "float64") return 8;
-  return 0;
-}
+int PlyTypeSize(const std::string& type) { return PlyScalarSize(PlyScalarOf(type)); }
 
 bool PlyTypeIsInteger(const std::string& type) {
-  return PlyTypeSize(type) > 0 && type != "float" && type != "float32" && type != "double" &&
-         type != "float64";
+  const PlyScalar scalar = PlyScalarOf(type);
+  return scalar != PlyScalar::kUnknown && scalar != PlyScalar::kFloat32 &&
+         scalar != PlyScalar::kFloat64;
 }
 
-// Reads one binary value of `type` and returns it as a double.
-double ReadBinaryValue(std::istream& in, const std::string& type, bool swap) {
+// The value of type T in `bytes`.
+template <typename T>
+double FromBytes(const unsigned char* bytes) {
+  T x;
+  std::memcpy(&x, bytes, sizeof(T));
+  return static_cast<double>(x);
+}
+
+// Reads one binary value of a known `scalar` type and returns it as a double.
+double ReadBinaryValue(std::istream& in, PlyScalar scalar, bool swap) {
   unsigned char bytes[8];
-  const int size = PlyTypeSize(type);
+  const int size = PlyScalarSize(scalar);
   if (!in.read(reinterpret_cast<char*>(bytes), size)) {
     throw std::runtime_error("truncated binary data");
   }
   if (swap) std::reverse(bytes, bytes + size);
-  if (type == "char" || type == "int8") { int8_t x; std::memcpy(&x, bytes, 1); return x; }
-  if (type == "uchar" || type == "uint8") return bytes[0];
-  if (type == "short" || type == "int16") { int16_t x; std::memcpy(&x, bytes, 2); return x; }
-  if (type == "ushort" || type == "uint16") { uint16_t x; std::memcpy(&x, bytes, 2); return x; }
-  if (type == "int" || type == "int32") { int32_t x; std::memcpy(&x, bytes, 4); return x; }
-  if (type == "uint" || type == "uint32") { uint32_t x; std::memcpy(&x, bytes, 4); return x; }
-  if (type == "float" || type == "float32") { float x; std::memcpy(&x, bytes, 4); return x; }
-  double x;
-  std::memcpy(&x, bytes, 8);
-  return x;
+  switch (scalar) {
+    case PlyScalar::kInt8: return FromBytes<int8_t>(bytes);
+    case PlyScalar::kUInt8: return FromBytes<uint8_t>(bytes);
+    case PlyScalar::kInt16: return FromBytes<int16_t>(bytes);
+    case PlyScalar::kUInt16: return FromBytes<uint16_t>(bytes);
+    case PlyScalar::kInt32: return FromBytes<int32_t>(bytes);
+    case PlyScalar::kUInt32: return FromBytes<uint32_t>(bytes);
+    case PlyScalar::kFloat32: return FromBytes<float>(bytes);
+    case PlyScalar::kFloat64: case PlyScalar::kUnknown: break;
+  }
+  return FromBytes<double>(bytes);
 }
 
 // The fewest bytes one item of `element` takes: its scalars and list counts in binary, a
@@ -444,9 +479,11 @@ PlyProperty ParsePlyProperty(const std::string& path, long number, std::istream&
     property.type = type;
   }
   if (!(tokens >> property.name)) Fail(path, number, "malformed property line");
-  if (PlyTypeSize(property.type) == 0) {
+  property.scalar = PlyScalarOf(property.type);
+  if (property.scalar == PlyScalar::kUnknown) {
     Fail(path, number, "unknown property type '" + Excerpt(property.type) + "'");
   }
+  if (!property.count_type.empty()) property.count_scalar = PlyScalarOf(property.count_type);
   return property;
 }
 
@@ -561,11 +598,11 @@ void ReadPlyItem(const std::string& path, std::istream& in, PlyFormat format,
     for (size_t a = 0; a < element.properties.size(); ++a) {
       const PlyProperty& property = element.properties[a];
       if (property.count_type.empty()) {
-        (*values)[a] = ReadBinaryValue(in, property.type, swap);
+        (*values)[a] = ReadBinaryValue(in, property.scalar, swap);
         continue;
       }
-      const long count = static_cast<long>(ReadBinaryValue(in, property.count_type, swap));
-      for (long c = 0; c < count; ++c) ReadBinaryValue(in, property.type, swap);
+      const long count = static_cast<long>(ReadBinaryValue(in, property.count_scalar, swap));
+      for (long c = 0; c < count; ++c) ReadBinaryValue(in, property.scalar, swap);
     }
   } catch (const std::runtime_error&) {
     Fail(path, 0, "binary data ends inside element '" + element.name + "' (item " +

@@ -82,6 +82,42 @@ TEST_F(PointCloudIoTest, BinaryPlyRoundTripWithAttributes) {
 
 // Every PLY scalar type keeps its values exactly, at the ends of its range too (2^24 + 1 is
 // the first integer a float cannot hold); out-of-range values are clamped to the type.
+TEST_F(PointCloudIoTest, BigEndianBinaryPlyReadsItsValues) {
+  // Two vertices laid out byte by byte, most significant byte first: a double x, a float y,
+  // a short z, a uchar list (skipped) and a ushort attribute.
+  std::string body;
+  auto append_reversed = [&body](const void* value, size_t size) {
+    const char* bytes = static_cast<const char*>(value);
+    for (size_t b = size; b-- > 0;) body.push_back(bytes[b]);
+  };
+  for (int v = 0; v < 2; ++v) {
+    const double x = v == 0 ? -1.25 : 1e10;
+    const float y = v == 0 ? 0.5f : -3.0f;
+    const int16_t z = v == 0 ? -300 : 7;
+    const uint8_t count = v == 0 ? 2 : 0;
+    const uint16_t tag = v == 0 ? 65535 : 258;
+    append_reversed(&x, sizeof(x));
+    append_reversed(&y, sizeof(y));
+    append_reversed(&z, sizeof(z));
+    append_reversed(&count, 1);
+    for (int c = 0; c < count; ++c) {
+      const int32_t item = 1000 + c;
+      append_reversed(&item, sizeof(item));
+    }
+    append_reversed(&tag, sizeof(tag));
+  }
+  const std::string path = Write(
+      "big.ply", "ply\nformat binary_big_endian 1.0\nelement vertex 2\nproperty double x\n"
+                 "property float32 y\nproperty int16 z\nproperty list uint8 int w\n"
+                 "property ushort tag\nend_header\n" + body);
+  const PointCloud cloud = ReadPointCloud(path);
+  ASSERT_EQ(cloud.points.size(), 2u);
+  EXPECT_EQ(cloud.points[0], energy::Point3(-1.25, 0.5, -300));
+  EXPECT_EQ(cloud.points[1], energy::Point3(1e10, -3, 7));
+  ASSERT_EQ(cloud.attributes.size(), 1u);
+  EXPECT_EQ(cloud.attributes[0].values, (std::vector<double>{65535, 258}));
+}
+
 TEST_F(PointCloudIoTest, AttributesKeepTheirTypeAndValues) {
   io::PointCloud cloud;
   cloud.points = {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
