@@ -187,7 +187,7 @@ void BuildPairs(NeighborGraph* graph, int num_threads) {
       larger[slot] = std::max(i, nbrs[a]);
     }
   }
-  // distinct[i]: the pairs {i, j} with i < j; below_count[j]: those with i < j.
+  // distinct[i]: the pairs {i, j} with j > i; below_count[j]: the pairs {i, j} with i < j.
   std::vector<int> distinct(n), below_count(n, 0);
 #pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
