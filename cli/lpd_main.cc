@@ -5,6 +5,7 @@
 #include <cstring>
 #include <exception>
 #include <map>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -186,6 +187,8 @@ int main(int argc, char** argv) {
   } catch (const lpd::io::Interrupted& interrupted) {
     std::fprintf(stderr, "lpd %s: %s\n", argv[1], interrupted.what());
     return 128 + interrupted.signal();
+  } catch (const std::bad_alloc&) {
+    lpd::io::ExitOutOfMemory();  // thrown past the new-handler (Eigen's allocator)
   } catch (const std::exception& error) {
     std::fprintf(stderr, "lpd %s: error: %s\n", argv[1], error.what());
     return 1;

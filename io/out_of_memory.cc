@@ -11,10 +11,9 @@
 #include "io/interruption.h"
 
 namespace lpd::io {
-namespace {
 
 // No allocation from here on: snprintf into a stack buffer, write, _exit.
-[[noreturn]] void OnOutOfMemory() {
+[[noreturn]] void ExitOutOfMemory() {
   struct rusage usage;
   const long peak_mb = ::getrusage(RUSAGE_SELF, &usage) == 0 ? usage.ru_maxrss / 1024 : -1;
   struct rlimit limit;
@@ -36,6 +35,8 @@ namespace {
   ::_exit(1);
 }
 
+namespace {
+
 std::terminate_handler default_terminate = nullptr;
 
 // Eigen's aligned allocator throws std::bad_alloc itself, without the new-handler: inside a
@@ -45,7 +46,7 @@ std::terminate_handler default_terminate = nullptr;
     try {
       std::rethrow_exception(current);
     } catch (const std::bad_alloc&) {
-      OnOutOfMemory();
+      ExitOutOfMemory();
     } catch (...) {
     }
   }
@@ -57,7 +58,7 @@ std::terminate_handler default_terminate = nullptr;
 
 void InstallOutOfMemoryHandler() {
   static const bool installed = [] {
-    std::set_new_handler(OnOutOfMemory);
+    std::set_new_handler(ExitOutOfMemory);
     default_terminate = std::set_terminate(OnTerminate);
     return true;
   }();

@@ -14,6 +14,10 @@ namespace lpd::io {
 // Installs the new-handler (once per process; later calls do nothing).
 void InstallOutOfMemoryHandler();
 
+// Removes the run's temporary files, writes the one-line message above and exits with
+// status 1: for a std::bad_alloc caught outside a parallel region (Eigen's allocator).
+[[noreturn]] void ExitOutOfMemory();
+
 }  // namespace lpd::io
 
 #endif  // LPD_IO_OUT_OF_MEMORY_H_

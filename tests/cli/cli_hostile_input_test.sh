@@ -216,18 +216,23 @@ random.seed(4)
 with open('$dir/big.xyz', 'w') as f:
     for _ in range(200000):
         f.write('%.6f %.6f %.6f\\n' % (random.random(), random.random(), random.gauss(0, 0.01)))"
-  cases=$((cases + 1))
-  mkdir -p "$dir/out_of_memory"
-  (cd "$dir/out_of_memory" && ulimit -v 160000 &&
-     "$lpd" denoise "$dir/big.xyz" -o out.ply --quiet >stdout 2>stderr)
-  code=$?
-  message=$(cat "$dir/out_of_memory/stderr")
-  [ "$code" -eq 1 ] || fail "out_of_memory: exit code $code: $message"
-  [ "$(wc -l <"$dir/out_of_memory/stderr")" -eq 1 ] || fail "out_of_memory: $message"
-  echo "$message" | grep -q "not enough memory" || fail "out_of_memory: $message"
-  [ -z "$(ls "$dir/out_of_memory" | grep -vE '^(stdout|stderr)$')" ] ||
-    fail "out_of_memory: left behind: $(ls "$dir/out_of_memory")"
-  echo "| out_of_memory (ulimit -v 160000) | $code | $(echo "$message" | cut -c1-120) |"
+  # 400 MB fails at an Eigen allocation outside a parallel region, which throws past the
+  # new-handler (it printed "std::bad_alloc"); the run needs about 700 MB.
+  for limit in 160000 400000; do
+    cases=$((cases + 1))
+    run_dir="$dir/out_of_memory_$limit"
+    mkdir -p "$run_dir"
+    (cd "$run_dir" && ulimit -v "$limit" &&
+       "$lpd" denoise "$dir/big.xyz" -o out.ply --quiet >stdout 2>stderr)
+    code=$?
+    message=$(cat "$run_dir/stderr")
+    [ "$code" -eq 1 ] || fail "out_of_memory $limit: exit code $code: $message"
+    [ "$(wc -l <"$run_dir/stderr")" -eq 1 ] || fail "out_of_memory $limit: $message"
+    echo "$message" | grep -q "not enough memory" || fail "out_of_memory $limit: $message"
+    [ -z "$(ls "$run_dir" | grep -vE '^(stdout|stderr)$')" ] ||
+      fail "out_of_memory $limit: left behind: $(ls "$run_dir")"
+    echo "| out_of_memory (ulimit -v $limit) | $code | $(echo "$message" | cut -c1-120) |"
+  done
 fi
 
 echo "$cases cases"
