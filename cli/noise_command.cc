@@ -10,6 +10,7 @@
 #include <gflags/gflags.h>
 
 #include "cli/commands.h"
+#include "io/atomic_output_file.h"
 #include "io/point_cloud_io.h"
 #include "experiments/shapes/noise.h"
 #include "experiments/shapes/poisson_disk_sampling.h"
@@ -17,6 +18,7 @@
 #include "experiments/shapes/triangle_mesh.h"
 
 DECLARE_string(output);
+DECLARE_string(output_format);
 DECLARE_bool(overwrite);
 DECLARE_uint64(seed);
 
@@ -52,6 +54,7 @@ int RunNoiseCommand(const std::vector<std::string>& arguments) {
   if (!arguments.empty() && FLAGS_output == arguments[0]) {
     throw std::invalid_argument("OUTPUT must differ from INPUT (refusing to overwrite input)");
   }
+  io::OutputFormat(FLAGS_output, FLAGS_output_format);  // refused before any sampling
   if (FLAGS_points < 1) throw std::invalid_argument("points must be >= 1");
   if (FLAGS_sampling != "uniform" && FLAGS_sampling != "poisson_disk") {
     throw std::invalid_argument("unknown --sampling '" + FLAGS_sampling +
@@ -130,9 +133,11 @@ int RunNoiseCommand(const std::vector<std::string>& arguments) {
     clean_cloud.comments.push_back(cloud.comments.front());
     io::WritePointCloud(FLAGS_clean_output, clean_cloud, FLAGS_overwrite);
   }
-  io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite);
-  for (const std::string& line : cloud.comments) std::printf("%s\n", line.c_str());
-  std::printf("wrote %s (%zu points)\n", FLAGS_output.c_str(), cloud.points.size());
+  io::WritePointCloud(FLAGS_output, cloud, FLAGS_overwrite, FLAGS_output_format);
+  // The summary on stdout, or on stderr when stdout carries the cloud ("-o -").
+  std::FILE* report = FLAGS_output == io::kStandardStream ? stderr : stdout;
+  for (const std::string& line : cloud.comments) std::fprintf(report, "%s\n", line.c_str());
+  std::fprintf(report, "wrote %s (%zu points)\n", FLAGS_output.c_str(), cloud.points.size());
   return 0;
 }
 

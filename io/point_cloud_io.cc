@@ -330,17 +330,19 @@ enum class PlyFormat { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
 enum class PlyScalar { kUnknown, kInt8, kUInt8, kInt16, kUInt16, kInt32, kUInt32, kFloat32,
                        kFloat64 };
 
+// Each type's names, its canonical one (what lpd writes) first.
+constexpr std::pair<const char*, PlyScalar> kPlyScalarNames[] = {
+    {"char", PlyScalar::kInt8},     {"int8", PlyScalar::kInt8},
+    {"uchar", PlyScalar::kUInt8},   {"uint8", PlyScalar::kUInt8},
+    {"short", PlyScalar::kInt16},   {"int16", PlyScalar::kInt16},
+    {"ushort", PlyScalar::kUInt16}, {"uint16", PlyScalar::kUInt16},
+    {"int", PlyScalar::kInt32},     {"int32", PlyScalar::kInt32},
+    {"uint", PlyScalar::kUInt32},   {"uint32", PlyScalar::kUInt32},
+    {"float", PlyScalar::kFloat32}, {"float32", PlyScalar::kFloat32},
+    {"double", PlyScalar::kFloat64}, {"float64", PlyScalar::kFloat64}};
+
 PlyScalar PlyScalarOf(const std::string& type) {
-  static const std::pair<const char*, PlyScalar> kNames[] = {
-      {"char", PlyScalar::kInt8},     {"int8", PlyScalar::kInt8},
-      {"uchar", PlyScalar::kUInt8},   {"uint8", PlyScalar::kUInt8},
-      {"short", PlyScalar::kInt16},   {"int16", PlyScalar::kInt16},
-      {"ushort", PlyScalar::kUInt16}, {"uint16", PlyScalar::kUInt16},
-      {"int", PlyScalar::kInt32},     {"int32", PlyScalar::kInt32},
-      {"uint", PlyScalar::kUInt32},   {"uint32", PlyScalar::kUInt32},
-      {"float", PlyScalar::kFloat32}, {"float32", PlyScalar::kFloat32},
-      {"double", PlyScalar::kFloat64}, {"float64", PlyScalar::kFloat64}};
-  for (const auto& [name, scalar] : kNames) {
+  for (const auto& [name, scalar] : kPlyScalarNames) {
     if (type == name) return scalar;
   }
   return PlyScalar::kUnknown;
@@ -1021,11 +1023,9 @@ void AppendTyped(const std::string& type, double value, std::vector<char>* recor
 }
 
 std::string CanonicalPlyType(const std::string& type) {
-  static const std::pair<const char*, const char*> kAliases[] = {
-      {"int8", "char"}, {"uint8", "uchar"}, {"int16", "short"}, {"uint16", "ushort"},
-      {"int32", "int"}, {"uint32", "uint"}, {"float32", "float"}, {"float64", "double"}};
-  for (const auto& [alias, name] : kAliases) {
-    if (type == alias) return name;
+  const PlyScalar scalar = PlyScalarOf(type);
+  for (const auto& [name, named] : kPlyScalarNames) {
+    if (named == scalar) return name;  // the first name of its type
   }
   return type;
 }

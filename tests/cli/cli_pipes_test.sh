@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Pipes: the same points through a file, a FIFO, standard input and standard output give the
-# same output bytes (XYZ and PLY inputs); '-' without a format is refused in one line.
+# same output bytes (XYZ and PLY inputs), and lpd noise writes to standard output too; '-'
+# without a format is refused in one line.
 # Usage: cli_pipes_test.sh PATH_TO_LPD
 lpd=$(realpath "$1")
 source "$(dirname "$0")/cli_test_lib.sh"
@@ -11,6 +12,10 @@ run() { "$lpd" denoise "$@" --quiet --threads=2 --max_iters=10; }
   fail "lpd noise failed"
 "$lpd" noise --shape=cube --points=4000 --sigma=0.004 -o noisy.ply >/dev/null 2>&1 ||
   fail "lpd noise failed"
+# lpd noise to standard output: the same cloud, the summary on stderr.
+"$lpd" noise --shape=cube --points=4000 --sigma=0.004 -o - --output_format=xyz \
+  >noise_stdout.xyz 2>noise_stdout.err || fail "lpd noise -o - failed: $(cat noise_stdout.err)"
+cmp -s noisy.xyz noise_stdout.xyz || fail "lpd noise -o - wrote another cloud than -o FILE"
 for format in xyz ply; do
   run "noisy.$format" -o "file_$format.xyz" >/dev/null 2>&1 || fail "$format file run failed"
   mkfifo "fifo.$format"
