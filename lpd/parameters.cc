@@ -417,9 +417,9 @@ std::vector<Parameter> FinalStepParameters() {
       Flag("offset_feedback", kBoth,
            {kFinal,
             "move each output point along its normal by the mean offset of the input points "
-            "from their outputs over its 120 nearest, shrunk where it is within two standard "
-            "errors of 0 (the inward bias of wide neighbourhoods on curved parts); only where "
-            "the probe reads sigma at most 1.15 spacings",
+            "from their outputs over its 120 nearest, shrunk to the bias's posterior mean "
+            "given the means around it (the inward bias of wide neighbourhoods on curved "
+            "parts); only where the probe reads sigma at most 1.15 spacings",
             "", "false"},
            [](O& o) -> bool& { return o.final_step.offset_feedback; }),
       Flag("separate_sides", kBoth,

@@ -26,10 +26,11 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
     offset[r] = normals[i].dot(inputs[i] - outputs[i]);
   }
   const double min_cosine = std::cos(kFeedbackMaxAngleDegrees * M_PI / 180.0);
-  std::vector<double> shift(count, 0.0);
+  const int neighbors = std::min(kFeedbackNeighbors, count);
   const energy::NearestNeighbors search(points);
-  search.ForEach(count, std::min(kFeedbackNeighbors, count), num_threads,
-                 [&points](int r) { return points[r]; },
+  // The mean offset m and its squared standard error v of each point; v < 0: no estimate.
+  std::vector<double> mean(count, 0.0), squared_error(count, -1.0);
+  search.ForEach(count, neighbors, num_threads, [&points](int r) { return points[r]; },
                  [&](int r, const int* nearest, const double*, int found) {
                    const energy::Point3& n = normals[rows[r]];
                    double sum = 0.0, sum_of_squares = 0.0;
@@ -43,12 +44,29 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
                      ++used;
                    }
                    if (used < 2) return;
-                   const double mean = sum / used;
+                   mean[r] = sum / used;
                    const double variance =
-                       std::max(0.0, (sum_of_squares - used * mean * mean) / (used - 1));
-                   const double squared_error = variance / used;
-                   if (!(mean * mean > 0.0)) return;
-                   shift[r] = mean * std::max(0.0, 1.0 - 4.0 * squared_error / (mean * mean));
+                       std::max(0.0, (sum_of_squares - used * mean[r] * mean[r]) / (used - 1));
+                   squared_error[r] = variance / used;
+                 });
+  // The bias's local spread: E[m^2] = b^2 + v, so max(0, m^2 - v) estimates b^2 at each
+  // point, and its mean over the same neighbours is the prior variance tau^2 of the bias.
+  // The posterior mean of a bias b ~ N(0, tau^2) seen as m ~ N(b, v) is m tau^2 / (tau^2 + v)
+  // (empirical Bayes; docs/method.md, "The mean offset fed back").
+  std::vector<double> shift(count, 0.0);
+  search.ForEach(count, neighbors, num_threads, [&points](int r) { return points[r]; },
+                 [&](int r, const int* nearest, const double*, int found) {
+                   if (squared_error[r] < 0.0) return;
+                   double sum = 0.0;
+                   int used = 0;
+                   for (int a = 0; a < found; ++a) {
+                     const int j = nearest[a];
+                     if (squared_error[j] < 0.0) continue;
+                     sum += std::max(0.0, mean[j] * mean[j] - squared_error[j]);
+                     ++used;
+                   }
+                   const double prior = sum / used;
+                   if (prior > 0.0) shift[r] = mean[r] * prior / (prior + squared_error[r]);
                  });
   for (int r = 0; r < count; ++r) {
     const int i = rows[r];

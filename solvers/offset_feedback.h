@@ -6,11 +6,13 @@
 // the sphere fitted to those planes keeps part of it (docs/method.md, "Where the error is
 // at 10K 3%"). The noise has mean zero, so the input points' mean offset from their outputs
 // measures that bias. Each output point o_i with normal n_i moves along n_i by
-//   m_i max(0, 1 - 4 v_i / m_i^2),
+//   m_i tau_i^2 / (tau_i^2 + v_i),
 // m_i the mean of n_j.(p_j - o_j) (signed to agree with n_i) over its kFeedbackNeighbors
 // nearest output points whose normals lie within kFeedbackMaxAngleDegrees of its own (the
-// other face of an edge does not count), v_i the squared standard error of that mean: where
-// m_i is within two standard errors of 0 the point stays.
+// other face of an edge does not count), v_i the squared standard error of that mean, and
+// tau_i^2 = mean over the same nearest points j of max(0, m_j^2 - v_j), the local spread of
+// the bias: the posterior mean of the bias (empirical Bayes), which moves a point by little
+// where the means around it are no larger than their errors.
 //
 // It needs the neighbourhood k to be as wide as the noise asks: where the probe reads sigma
 // above kCalibratedReadRatio spacings it reads low (neighborhood_size.h), k is narrower, the
