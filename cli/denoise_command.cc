@@ -278,11 +278,11 @@ void PrintSummary(const solvers::DenoiseResult& result, const solvers::DenoiseOp
     const solvers::NeighborhoodSize& size = result.neighborhood;
     char text[300];
     std::snprintf(text, sizeof(text),
-                  " (from noise %.3g and spacing %.3g of the diagonal: radius %.3g noise "
-                  "deviations)",
-                  size.read_sigma, size.spacing, size.radius_in_sigmas);
+                  " (from noise %.3g as the probe reads it, %.3g estimated, and spacing %.3g of "
+                  "the diagonal: radius %.3g readings)",
+                  size.read_sigma, size.noise_sigma, size.spacing, size.radius_in_sigmas);
     chosen = text;
-    if (size.noise_sigma != size.read_sigma) {
+    if (size.merged_sides) {
       std::snprintf(text, sizeof(text),
                     " (from the spread %.3g of merged sides of a thin part, noise %.3g each, and "
                     "spacing %.3g of the diagonal: radius %.3g spreads)",

@@ -77,8 +77,9 @@ struct Summary {
   int passes = 1;
   int k = 0;
   double noise_sigma = 0.0;   // estimated, of the bounding-box diagonal (0 with k given)
-  // The probe's reading that k was chosen from: noise_sigma, or on the merged sides of a
-  // thin part their spread (the sides' gap and noise together), likewise.
+  // The probe's reading that k was chosen from, likewise: below noise_sigma where the noise
+  // is as wide as the spacing (the probe under-reads it there), and on the merged sides of a
+  // thin part their spread (the sides' gap and noise together).
   double read_sigma = 0.0;
   double spacing = 0.0;       // estimated point spacing, likewise
   double eta = 0.0, lambda = 0.0, mu_l = 0.0, mu_m = 0.0;  // used by the last pass

@@ -57,9 +57,10 @@ struct PlaneReading {
   double fraction;    // read sigma / true sigma
 };
 constexpr PlaneReading kPlaneReadings[] = {
-    {1.001, 0.826}, {1.042, 0.799}, {1.077, 0.773}, {1.103, 0.747}, {1.127, 0.722},
-    {1.167, 0.679}, {1.197, 0.641}, {1.219, 0.607}, {1.256, 0.538}, {1.274, 0.485},
-    {1.305, 0.414},
+    {0.145, 1.000}, {0.285, 0.993}, {0.417, 0.983}, {0.538, 0.969}, {0.647, 0.952},
+    {0.743, 0.931}, {0.825, 0.907}, {0.895, 0.881}, {0.954, 0.854}, {1.001, 0.826},
+    {1.042, 0.799}, {1.077, 0.773}, {1.103, 0.747}, {1.127, 0.722}, {1.167, 0.679},
+    {1.197, 0.641}, {1.219, 0.607}, {1.256, 0.538}, {1.274, 0.485}, {1.305, 0.414},
 };
 
 // Sides of a thin part too close to split (split_probe[q] false) read, from the plane
@@ -126,15 +127,23 @@ double PlaneReadFraction(double read_ratio) {
 
 double LastPlaneReadRatio() { return std::end(kPlaneReadings)[-1].read_ratio; }
 
+double PlaneReadingWeight(double thin_candidate_fraction) {
+  return std::clamp((kThinShareForNoWidening - thin_candidate_fraction) /
+                        (kThinShareForNoWidening - kThinShareForFullWidening),
+                    0.0, 1.0);
+}
+
 double WideNoiseFactor(double read_ratio, double thin_candidate_fraction) {
   if (!(read_ratio > kCalibratedReadRatio)) return 1.0;
   const double plane_factor =
       PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(read_ratio);
-  // The weight falls linearly from 1 to 0 between the two shares.
-  const double weight = std::clamp((kThinShareForNoWidening - thin_candidate_fraction) /
-                                       (kThinShareForNoWidening - kThinShareForFullWidening),
-                                   0.0, 1.0);
-  return 1.0 + weight * (plane_factor - 1.0);
+  return 1.0 + PlaneReadingWeight(thin_candidate_fraction) * (plane_factor - 1.0);
+}
+
+double NoiseEstimate(double read_sigma, double spacing, double thin_candidate_fraction) {
+  const double fraction = PlaneReadFraction(read_sigma / spacing);
+  return read_sigma /
+         (1.0 + PlaneReadingWeight(thin_candidate_fraction) * (fraction - 1.0));
 }
 
 NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
@@ -270,9 +279,10 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   }
   const double floor = energy::QuantizationNoise(points) / frame.scale;
   size.read_sigma = NoiseFromResiduals(std::move(residuals), k, floor);
-  size.noise_sigma = side_residuals.empty()
-                         ? size.read_sigma
-                         : NoiseFromResiduals(std::move(side_residuals), k, floor);
+  size.merged_sides = !side_residuals.empty();
+  if (size.merged_sides) {
+    size.noise_sigma = NoiseFromResiduals(std::move(side_residuals), k, floor);
+  }
   if (kept) {
     kept->splits = std::move(splits);
     size.split_search = std::move(kept);
@@ -282,6 +292,10 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     throw std::invalid_argument(
         "most points coincide with their " + std::to_string(k) +
         " nearest neighbours: no spacing to choose k from (remove the duplicates or give --k)");
+  }
+  if (!size.merged_sides) {
+    size.noise_sigma =
+        NoiseEstimate(size.read_sigma, size.spacing, size.thin_candidate_fraction);
   }
   // Past the calibrated range the probe reads the noise ever lower, unless the sides of thin
   // parts read as wide noise (WideNoiseFactor).

@@ -66,7 +66,8 @@ struct NeighborhoodSizeOptions {
 };
 
 // The fraction of the true sigma the probe reads on a plane with Gaussian noise where it
-// reads this sigma / spacing (linear between the measured readings, held past their ends).
+// reads this sigma / spacing (linear between the measured readings, held past their ends:
+// 1 below 0.145, 0.83 at 1.0, 0.41 from 1.305 on).
 double PlaneReadFraction(double read_ratio);
 
 // The largest read sigma / spacing of the plane readings: there the probe reads 0.41 of the
@@ -82,20 +83,31 @@ constexpr double kCalibratedReadRatio = 1.15;
 constexpr double kThinShareForFullWidening = 0.05;
 constexpr double kThinShareForNoWidening = 0.09;
 
+// How far the plane's readings hold for a cloud with this share of nearly split regions: 1 up
+// to kThinShareForFullWidening, falling linearly to 0 at kThinShareForNoWidening. Sides too
+// close to split read as one sheet with wider noise, not as noise the plane under-reads.
+double PlaneReadingWeight(double thin_candidate_fraction);
+
 // c's factor at this read sigma / spacing: 1 up to kCalibratedReadRatio; past it, the
 // fraction of the true sigma the probe reads on a plane there over the fraction it reads at
 // kCalibratedReadRatio (1.09 at 1.2, 1.30 at 1.26, held at 1.68 from 1.31 on), the excess over
-// 1 weighted from 1 down to 0 as the share of nearly split regions goes from
-// kThinShareForFullWidening to kThinShareForNoWidening.
+// 1 weighted by PlaneReadingWeight.
 double WideNoiseFactor(double read_ratio, double thin_candidate_fraction);
 
+// The noise's deviation from the probe's reading: read_sigma over the fraction of the true
+// sigma the probe reads on a plane at read_sigma / spacing, that fraction's shortfall from 1
+// weighted by PlaneReadingWeight (docs/method.md, "The noise estimate").
+double NoiseEstimate(double read_sigma, double spacing, double thin_candidate_fraction);
+
 struct NeighborhoodSize {
-  // The noise's deviation: of each side where the probe finds the merged sides of a thin
-  // part (merged_sides.h), else read_sigma. In the normalized frame (bounding-box diagonal 1).
+  // The noise's deviation, in the normalized frame (bounding-box diagonal 1): of each side
+  // where the probe finds the merged sides of a thin part (merged_sides.h); else NoiseEstimate
+  // of read_sigma (past LastPlaneReadRatio a lower bound).
   double noise_sigma = 0.0;
   // The probe's reading, which k and the rules on sigma / spacing are calibrated on: on
   // merged sides their spread, one sheet with wider noise, as the solve sees them.
   double read_sigma = 0.0;
+  bool merged_sides = false;  // noise_sigma is each merged side's
   double spacing = 0.0;  // likewise
   double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;

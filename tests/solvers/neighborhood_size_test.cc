@@ -47,17 +47,20 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
   const energy::PointList clean =
       experiments::PoissonDiskSample(sheets, 20000, /*seed=*/11).points;
   const NeighborhoodSizeOptions options;  // wide_noise by default
-  for (const double sigma : {0.015, 0.024, 0.0375}) {  // reads about 1.0, 1.17 and 1.26
+  // Read about 0.42, 0.75, 1.0, 1.17 and 1.26 spacings.
+  for (const double sigma : {0.006, 0.011, 0.015, 0.024, 0.0375}) {
     std::mt19937_64 rng(7);
     std::normal_distribution<double> normal(0.0, sigma);
     energy::PointList noisy = clean;
     for (energy::Point3& p : noisy) p += energy::Point3(normal(rng), normal(rng), normal(rng));
     const NeighborhoodSize size = ChooseNeighborhoodSize(noisy, options, 2);
     const double true_sigma = sigma / energy::BoundingBoxDiagonal(noisy);
-    const double read_ratio = size.noise_sigma / size.spacing;
-    EXPECT_NEAR(size.noise_sigma / true_sigma, PlaneReadFraction(read_ratio),
+    const double read_ratio = size.read_sigma / size.spacing;
+    EXPECT_NEAR(size.read_sigma / true_sigma, PlaneReadFraction(read_ratio),
                 0.05 * PlaneReadFraction(read_ratio))
         << "sigma " << sigma << ", read sigma / spacing " << read_ratio;
+    // The estimate takes the plane's reading back out: the true sigma, within the same 5%.
+    EXPECT_NEAR(size.noise_sigma / true_sigma, 1.0, 0.05) << "sigma " << sigma;
     // Sheets far apart: few regions nearly split, and past kCalibratedReadRatio c widens by
     // the plane's whole further fall.
     EXPECT_LT(size.thin_candidate_fraction, kThinShareForFullWidening) << "sigma " << sigma;
@@ -102,7 +105,7 @@ TEST(NeighborhoodSize, AThinPlateReadAsWideNoiseDoesNotWiden) {
   for (energy::Point3& p : points) p += energy::Point3(normal(rng), normal(rng), normal(rng));
   const NeighborhoodSizeOptions options;
   const NeighborhoodSize size = ChooseNeighborhoodSize(points, options, 2);
-  EXPECT_GT(size.noise_sigma / size.spacing, kCalibratedReadRatio);
+  EXPECT_GT(size.read_sigma / size.spacing, kCalibratedReadRatio);
   EXPECT_GT(size.thin_candidate_fraction, kThinShareForNoWidening);
   EXPECT_EQ(size.radius_in_sigmas, options.radius_in_sigmas);
 }

@@ -74,7 +74,7 @@ TEST(ThinParts, SidesThreeDeviationsApartStayApartWhereTheNoiseIsAsWideAsTheSpac
   energy::PointList normalized;
   for (const energy::Point3& p : sheets.points) normalized.push_back(frame.ToNormalized(p));
   const NeighborhoodSize size = ChooseNeighborhoodSize(sheets.points, {}, 2);
-  ASSERT_GE(size.noise_sigma, size.spacing);
+  ASSERT_GE(size.read_sigma, size.spacing);
   const auto own_side_fraction = [&](energy::ThinRegionGrowth growth) {
     const energy::NeighborGraph plain = energy::BuildNeighborGraph(normalized, size.k, 2);
     const energy::NeighborGraph split =
@@ -110,7 +110,7 @@ TEST(ThinParts, AtNarrowNoiseThinRegionsGrowWhereTheyAreCommon) {
   };
   const NoisyShape sheets = Noisy("sheets:size=1,gap=0.032", 10000, 0.01);
   const NeighborhoodSize size = ChooseNeighborhoodSize(sheets.points, {}, 2);
-  ASSERT_LT(size.noise_sigma, size.spacing);
+  ASSERT_LT(size.read_sigma, size.spacing);
   EXPECT_GT(graphs_differ(sheets.points, size.k, energy::ThinRegionGrowth::kWhereCommon), 0.05);
   EXPECT_EQ(graphs_differ(sheets.points, size.k, energy::ThinRegionGrowth::kWhereCommon),
             graphs_differ(sheets.points, size.k, energy::ThinRegionGrowth::kEverywhere));
