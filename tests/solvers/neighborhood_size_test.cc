@@ -91,6 +91,22 @@ TEST(NeighborhoodSize, WideNoiseFactorFadesWithTheShareOfNearlySplitRegions) {
   EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, 0.5), 1.0);
 }
 
+// The estimate in closed form: the reading over the plane's read fraction, the fraction's
+// shortfall from 1 faded out between the same two shares of nearly split regions.
+TEST(NeighborhoodSize, NoiseEstimateFadesWithTheShareOfNearlySplitRegions) {
+  const double read = 0.012, spacing = 0.01;  // reads 1.2 spacings
+  const double fraction = PlaneReadFraction(1.2);
+  EXPECT_LT(fraction, 0.7);
+  EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, 0.0), read / fraction);
+  EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, kThinShareForFullWidening), read / fraction);
+  const double middle = 0.5 * (kThinShareForFullWidening + kThinShareForNoWidening);
+  EXPECT_NEAR(NoiseEstimate(read, spacing, middle), read / (1.0 + 0.5 * (fraction - 1.0)),
+              1e-15);
+  EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, kThinShareForNoWidening), read);
+  // Noise far below the spacing reads whole.
+  EXPECT_DOUBLE_EQ(NoiseEstimate(0.001, spacing, 0.0), 0.001);
+}
+
 // A plate about 2 noise deviations thick at noise wider than the spacing (the learned
 // denoisers' plate_t0.03 at 50,000 points and 2%): it reads as one sheet with wide noise,
 // past kCalibratedReadRatio, but many of its regions nearly split, so c does not widen (a
