@@ -424,13 +424,13 @@ std::vector<Parameter> FinalStepParameters() {
            [](O& o) -> bool& { return o.final_step.offset_feedback; }),
       Flag("separate_sides", kBoth,
            {kFinal,
-            "where the input points' offsets from the output (from the mean of its 60 nearest "
-            "outputs within two deviations of the inputs' offsets along its normal) read as two "
-            "sides of a thin part merged into one (kurtosis under 2.75 over 1,500 points), move "
-            "each output point to the side its offset's sign picks; only where a tenth or more "
-            "of these regions read as merged (where a fifth do, neighbouring regions under 2.87 "
-            "join them); and where the noise reads wider than 1.15 spacings, move outputs left "
-            "between two output layers onto the layer nearer their input",
+            "where the input points' offsets from the output (from the mean of its 60 outputs "
+            "nearest across its normal within two deviations of the inputs' offsets along it) "
+            "read as two sides of a thin part merged into one (kurtosis under 2.75 over 1,500 "
+            "points), move each output point to the side its offset's sign picks; only where a "
+            "tenth or more of these regions read as merged (where a fifth do, neighbouring "
+            "regions under 2.94 join them); and where the noise reads wider than 1.15 spacings, "
+            "move outputs left between two output layers onto the layer nearer their input",
             "", "false"},
            [](O& o) -> bool& { return o.final_step.separate_merged_sides; }),
       Number("outlier_fraction", kBoth,

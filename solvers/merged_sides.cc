@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "energy/nearest_neighbors.h"
 #include "energy/sheet_split.h"
@@ -141,20 +142,27 @@ energy::PointList SidesReference(const energy::PointList& outputs,
   for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
   const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
   const energy::NearestNeighbors search(anchor_points);
-  search.ForEach(count, std::min(kSidesReferenceNeighbors, count), num_threads,
-                 [&](int r) { return anchor_points[r]; },
+  search.ForEach(count, std::min(kSidesReferenceSearched * kSidesReferenceNeighbors, count),
+                 num_threads, [&](int r) { return anchor_points[r]; },
                  [&](int r, const int* nearest, const double*, int found) {
                    const int i = anchors[r];
                    const energy::Point3& n = normals[i];
-                   double sum = 0.0;
-                   int used = 0;
+                   // (distance across n squared, height along n) of the candidates
+                   thread_local std::vector<std::pair<double, double>> candidates;
+                   candidates.clear();
                    for (int b = 0; b < found; ++b) {
                      if (std::abs(n.dot(normals[anchors[nearest[b]]])) < min_cosine) continue;
-                     const double height = n.dot(anchor_points[nearest[b]] - outputs[i]);
+                     const energy::Point3 step = anchor_points[nearest[b]] - outputs[i];
+                     const double height = n.dot(step);
                      if (!(std::abs(height) < band)) continue;
-                     sum += height;
-                     ++used;
+                     candidates.emplace_back(step.squaredNorm() - height * height, height);
                    }
+                   const size_t used =
+                       std::min(candidates.size(), static_cast<size_t>(kSidesReferenceNeighbors));
+                   std::partial_sort(candidates.begin(), candidates.begin() + used,
+                                     candidates.end());
+                   double sum = 0.0;
+                   for (size_t b = 0; b < used; ++b) sum += candidates[b].second;
                    if (used > 0) reference[i] = outputs[i] + (sum / used) * n;
                  });
   return reference;

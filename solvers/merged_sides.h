@@ -115,12 +115,16 @@ bool SidesMayHaveMerged(const NeighborhoodSize& estimates);
 // 50K points and 3% noise, come out near their mid-surface but spread over a quarter of the
 // noise with the input's side, and the offsets from the outputs lose their two-sided shape
 // (their regions read 2.9 where such sides read 2.56; docs/method.md, "Thin parts"). The
-// reference moves each output along its normal n by the mean of n.(o_j - o) over those of its
-// kSidesReferenceNeighbors nearest outputs o_j whose normals lie within
-// kSidesReferenceMaxAngleDegrees of n (not the other face of an edge) and whose height
-// |n.(o_j - o)| is under a band: the middle of what the outputs of a merged part spread over,
-// but not the other side of a part that the graph split cleanly (the split takes sides 2.8
-// deviations apart or more, and its outputs lie on them).
+// reference moves each output along its normal n by the mean of n.(o_j - o) over the
+// kSidesReferenceNeighbors outputs o_j nearest across n (in the tangent plane) among its
+// kSidesReferenceSearched x kSidesReferenceNeighbors nearest, of those whose normals lie
+// within kSidesReferenceMaxAngleDegrees of n (not the other face of an edge) and whose
+// height |n.(o_j - o)| is under a band: the middle of what the outputs of a merged part
+// spread over, but not the other side of a part that the graph split cleanly (the split
+// takes sides 2.8 deviations apart or more, and its outputs lie on them). Nearest in space,
+// the neighbours would lean to outputs at o's own height where the spread is as thick as
+// their radius, and the reference would follow each output part way (docs/method.md, "The
+// reference's neighbours across the normal").
 //
 // The band is kSidesReferenceBandDeviations times the deviation of the inputs' offsets from
 // their own outputs (OffsetDeviation), read after the solve: on the benchmark's meshes 0.82-0.97
@@ -130,6 +134,7 @@ bool SidesMayHaveMerged(const NeighborhoodSize& estimates);
 // 2%, its outputs on layers 1.4 deviations apart), and stays under the 2.8 deviations between
 // the sides of a part split cleanly.
 constexpr int kSidesReferenceNeighbors = 60;
+constexpr int kSidesReferenceSearched = 2;
 constexpr double kSidesReferenceMaxAngleDegrees = 20.0;
 constexpr double kSidesReferenceBandDeviations = 2.0;
 

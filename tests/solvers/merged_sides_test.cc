@@ -345,7 +345,7 @@ TEST(OffsetDeviation, IsTheScaledMedianOffsetAlongTheNormalOverTheAnchorsByBrute
   EXPECT_EQ(OffsetDeviation(inputs, outputs, normals, {}), 0.0);
 }
 
-TEST(SidesReference, IsTheMeanHeightOfTheNearestOutputsWithinTheBandByBruteForce) {
+TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteForce) {
   // A wavy sheet with scattered outputs (no ties in distance), normals tilted about z, some
   // of them beyond the angle bar; a band that keeps part of the neighbours out.
   std::mt19937_64 random(17);
@@ -371,18 +371,24 @@ TEST(SidesReference, IsTheMeanHeightOfTheNearestOutputsWithinTheBandByBruteForce
       continue;
     }
     if (i % 5 != 0) continue;  // a sample of the anchors
+    // Of the searched nearest in space, those the angle and the band keep, and of them the
+    // kSidesReferenceNeighbors nearest across the normal.
     std::vector<std::pair<double, int>> by_distance;
     for (int j : anchors) by_distance.emplace_back((outputs[j] - outputs[i]).squaredNorm(), j);
     std::sort(by_distance.begin(), by_distance.end());
-    double sum = 0.0;
-    int used = 0;
-    for (int b = 0; b < kSidesReferenceNeighbors; ++b) {
+    std::vector<std::pair<double, double>> across;  // (squared distance across n, height)
+    for (int b = 0; b < kSidesReferenceSearched * kSidesReferenceNeighbors; ++b) {
       const int j = by_distance[b].second;
       if (std::abs(normals[i].dot(normals[j])) < min_cosine) continue;
       const double h = normals[i].dot(outputs[j] - outputs[i]);
       if (std::abs(h) >= band) continue;
-      sum += h;
-      ++used;
+      across.emplace_back(by_distance[b].first - h * h, h);
+    }
+    std::sort(across.begin(), across.end());
+    double sum = 0.0;
+    int used = 0;
+    for (; used < kSidesReferenceNeighbors && used < static_cast<int>(across.size()); ++used) {
+      sum += across[used].second;
     }
     ASSERT_GT(used, 0);
     const energy::Point3 expected = outputs[i] + (sum / used) * normals[i];
@@ -392,6 +398,37 @@ TEST(SidesReference, IsTheMeanHeightOfTheNearestOutputsWithinTheBandByBruteForce
   EXPECT_GT(moved, 300);
   // No noise estimate: the outputs themselves.
   EXPECT_EQ(SidesReference(outputs, normals, anchors, 0.0, 2), outputs);
+}
+
+TEST(SidesReference, OutputsSpreadOverAMergedSlabGetItsMidPlane) {
+  // Merged sides +-a (a = 0.9 s) whose outputs follow their inputs part way (0.6 of their
+  // height): a slab about as thick as the radius of 60 neighbours. Its mid-plane z = 0 is the
+  // reference wanted; nearest in space, each output's neighbours lean to its own height.
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double s = 0.02, a = 0.9 * s;
+  std::normal_distribution<double> noise(0.0, s);
+  energy::PointList outputs, normals;
+  std::vector<int> anchors;
+  for (int i = 0; i < 20000; ++i) {
+    const double z = (i % 2 == 0 ? a : -a) + noise(random);
+    outputs.emplace_back(unit(random), unit(random), 0.6 * z);
+    normals.emplace_back(0.0, 0.0, 1.0);
+    anchors.push_back(i);
+  }
+  const energy::PointList reference = SidesReference(outputs, normals, anchors, 3.0 * s, 2);
+  double output_squares = 0.0, reference_squares = 0.0;
+  int count = 0;
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    const double x = outputs[i].x(), y = outputs[i].y();
+    if (x < 0.1 || x > 0.9 || y < 0.1 || y > 0.9) continue;  // away from the rim
+    output_squares += outputs[i].z() * outputs[i].z();
+    reference_squares += reference[i].z() * reference[i].z();
+    ++count;
+  }
+  ASSERT_GT(count, 10000);
+  // Measured: 0.16 (0.42 with the 60 nearest in space, 0.13 with the 60 across of 180).
+  EXPECT_LT(std::sqrt(reference_squares / output_squares), 0.2);
 }
 
 TEST(SeparateMergedSides, FewerPointsThanARegionStay) {
