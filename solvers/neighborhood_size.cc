@@ -280,9 +280,6 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
   const double floor = energy::QuantizationNoise(points) / frame.scale;
   size.read_sigma = NoiseFromResiduals(std::move(residuals), k, floor);
   size.merged_sides = !side_residuals.empty();
-  if (size.merged_sides) {
-    size.noise_sigma = NoiseFromResiduals(std::move(side_residuals), k, floor);
-  }
   if (kept) {
     kept->splits = std::move(splits);
     size.split_search = std::move(kept);
@@ -293,10 +290,10 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
         "most points coincide with their " + std::to_string(k) +
         " nearest neighbours: no spacing to choose k from (remove the duplicates or give --k)");
   }
-  if (!size.merged_sides) {
-    size.noise_sigma =
-        NoiseEstimate(size.read_sigma, size.spacing, size.thin_candidate_fraction);
-  }
+  size.noise_sigma =
+      size.merged_sides
+          ? NoiseFromResiduals(std::move(side_residuals), k, floor)
+          : NoiseEstimate(size.read_sigma, size.spacing, size.thin_candidate_fraction);
   // Past the calibrated range the probe reads the noise ever lower, unless the sides of thin
   // parts read as wide noise (WideNoiseFactor).
   size.radius_in_sigmas = options.radius_in_sigmas;
