@@ -85,29 +85,49 @@ void SplitOffUnsolved(const std::vector<int>& solved, const energy::PointList& o
   state->order = std::move(solved_order);
 }
 
-// SeparateMergedSides, then (with `between_layers`) MoveBetweenLayerPointsOntoLayers, on
-// `outputs` (input frame, moved in place) of `inputs` (normalized frame), the flagged outliers
-// standing; returns how many points moved.
-int SeparateSides(const energy::Frame& frame, const energy::PointList& inputs,
-                  const energy::PointList& normals, const std::vector<uint8_t>& is_outlier,
-                  bool between_layers, int num_threads, energy::PointList* outputs) {
-  energy::PointList normalized(outputs->size());
-  std::vector<uint8_t> movable(outputs->size());
-  for (size_t i = 0; i < normalized.size(); ++i) {
-    normalized[i] = frame.ToNormalized((*outputs)[i]);
-    movable[i] = !is_outlier[i];
+// One set of points whose merged sides are told apart: `inputs` (normalized frame) and their
+// `outputs` (input frame, moved in place).
+struct SidesInput {
+  const energy::PointList& inputs;
+  const energy::PointList& normals;
+  const std::vector<uint8_t>& is_outlier;
+  energy::PointList* outputs;
+};
+
+// SeparateMergedSides over all `sets` at once, then (with `between_layers`)
+// MoveBetweenLayerPointsOntoLayers in each, the flagged outliers standing; returns how many
+// points moved.
+int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& sets,
+                  bool between_layers, int num_threads) {
+  std::vector<energy::PointList> normalized(sets.size());
+  std::vector<std::vector<uint8_t>> movable(sets.size());
+  std::vector<SidesPart> parts;
+  for (size_t s = 0; s < sets.size(); ++s) {
+    const energy::PointList& outputs = *sets[s].outputs;
+    normalized[s].resize(outputs.size());
+    movable[s].resize(outputs.size());
+    for (size_t i = 0; i < outputs.size(); ++i) {
+      normalized[s][i] = frame.ToNormalized(outputs[i]);
+      movable[s][i] = !sets[s].is_outlier[i];
+    }
+    parts.push_back({sets[s].inputs, normalized[s], sets[s].normals, movable[s]});
   }
-  int merged = 0, between = 0;
-  const energy::PointList separated =
-      SeparateMergedSides(inputs, normalized, normals, movable, num_threads, &merged);
-  const energy::PointList layered =
-      between_layers ? MoveBetweenLayerPointsOntoLayers(inputs, separated, normals, movable,
-                                                        num_threads, &between)
-                     : separated;
-  for (size_t i = 0; i < layered.size(); ++i) {
-    if (layered[i] != normalized[i]) (*outputs)[i] = frame.ToInput(layered[i]);
+  int moved = 0;
+  const std::vector<energy::PointList> separated =
+      SeparateMergedSides(parts, num_threads, &moved);
+  for (size_t s = 0; s < sets.size(); ++s) {
+    int between = 0;
+    const energy::PointList layered =
+        between_layers ? MoveBetweenLayerPointsOntoLayers(sets[s].inputs, separated[s],
+                                                          sets[s].normals, movable[s],
+                                                          num_threads, &between)
+                       : separated[s];
+    moved += between;
+    for (size_t i = 0; i < layered.size(); ++i) {
+      if (layered[i] != normalized[s][i]) (*sets[s].outputs)[i] = frame.ToInput(layered[i]);
+    }
   }
-  return merged + between;
+  return moved;
 }
 
 }  // namespace
@@ -293,30 +313,17 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       result.projected[i] = problem.frame.ToInput(fed_back[i]);
     }
   }
-  // Merged sides of a thin part, told apart (merged_sides.h): the solved points, and below
-  // the points of a subsample run's extension, each over their own regions. A resumed run
-  // keeps no estimates and skips it, as it skips the feedback.
-  const bool separate_sides =
-      options.final_step.separate_merged_sides && estimates.noise_sigma > 0.0;
-  // Points left between two sides, where the probe reads the noise wider than the spacing
-  // (between_layers.h).
-  const bool between_layers = estimates.spacing > 0.0 &&
-                              estimates.read_sigma > kCalibratedReadRatio * estimates.spacing;
-  if (separate_sides) {
-    result.num_separated =
-        SeparateSides(problem.frame, problem.points, result.normals, result.indicators.is_outlier,
-                      between_layers, options.settings.num_threads, &result.projected);
-  }
-  if (options.final_step.snap_features) {
-    result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
-                                        options.final_step.snapping, &result.projected);
-  }
   energy::PointList extended_points, extended_normals;
   PointIndicators extended;
+  energy::PointList extended_inputs;  // normalized frame
   if (!state.left_out.empty()) {
     ExtendToPoints(problem, state.variables, surfaces, agreement_scale, result.indicators,
                    result.summary.mu_l, options.final_step, state.left_out_points,
                    options.settings.num_threads, &extended_points, &extended_normals, &extended);
+    extended_inputs.resize(state.left_out_points.size());
+    for (size_t q = 0; q < extended_inputs.size(); ++q) {
+      extended_inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
+    }
     if (feed_back) {
       energy::PointList points(extended_points.size());
       std::vector<uint8_t> extended_movable(points.size());
@@ -330,15 +337,26 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
         extended_points[q] = problem.frame.ToInput(points[q]);
       }
     }
-    if (separate_sides) {
-      energy::PointList inputs(state.left_out_points.size());
-      for (size_t q = 0; q < inputs.size(); ++q) {
-        inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
-      }
-      result.num_separated +=
-          SeparateSides(problem.frame, inputs, extended_normals, extended.is_outlier,
-                        between_layers, options.settings.num_threads, &extended_points);
+  }
+  // Merged sides of a thin part, told apart (merged_sides.h): the solved points and those of
+  // a subsample run's extension, with one count of merged regions. A resumed run keeps no
+  // estimates and skips it, as it skips the feedback.
+  if (options.final_step.separate_merged_sides && estimates.noise_sigma > 0.0) {
+    // Points left between two sides, where the probe reads the noise wider than the spacing
+    // (between_layers.h).
+    const bool between_layers = estimates.spacing > 0.0 &&
+                                estimates.read_sigma > kCalibratedReadRatio * estimates.spacing;
+    std::vector<SidesInput> sets = {
+        {problem.points, result.normals, result.indicators.is_outlier, &result.projected}};
+    if (!state.left_out.empty()) {
+      sets.push_back({extended_inputs, extended_normals, extended.is_outlier, &extended_points});
     }
+    result.num_separated =
+        SeparateSides(problem.frame, sets, between_layers, options.settings.num_threads);
+  }
+  if (options.final_step.snap_features) {
+    result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
+                                        options.final_step.snapping, &result.projected);
   }
   const std::vector<int>& left_out = state.left_out;
   result.projected = ToInputOrder(result.projected, order, extended_points, left_out);

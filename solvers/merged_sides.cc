@@ -35,11 +35,6 @@ bool SidesMayHaveMerged(const NeighborhoodSize& estimates) {
   return estimates.thin_candidate_fraction >= kThinShareForNoWidening;
 }
 
-bool SideRegions::MergedEnough() const {
-  const auto num_seeds = std::count(seed.begin(), seed.end(), 1);
-  return !seed.empty() && num_seeds >= kMinMergedRegionShare * seed.size();
-}
-
 std::vector<int> SideRegions::MergedRegionOf(const energy::PointList& points,
                                              int num_threads) const {
   std::vector<int> region_of(points.size(), -1);
@@ -64,12 +59,12 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
   regions.centres.resize(num_centres);
   for (int c = 0; c < num_centres; ++c) regions.centres[c] = positions[centres[c]];
   regions.sides.resize(num_centres);
-  regions.merged.assign(num_centres, 0);
+  regions.growable.assign(num_centres, 0);
   regions.seed.assign(num_centres, 0);
+  regions.merged.assign(num_centres, 0);
   regions.median_abs_offset.resize(num_centres);
   const double seed_kurtosis = MaxMergedKurtosis(kSidesRegionPoints);
   const double growth_kurtosis = MaxGrowthKurtosis(kSidesRegionPoints);
-  std::vector<uint8_t> may_grow(num_centres, 0);
   const energy::NearestNeighbors region_search(positions);
   region_search.ForEach(
       num_centres, kSidesRegionPoints, num_threads,
@@ -85,40 +80,61 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
         }
         m2 /= found;
         m4 /= found;
-        may_grow[c] = EstimateTwoSides(m2, m4, growth_kurtosis, &regions.sides[c]);
-        regions.seed[c] = may_grow[c] && m4 < seed_kurtosis * m2 * m2;
+        regions.growable[c] = EstimateTwoSides(m2, m4, growth_kurtosis, &regions.sides[c]);
+        regions.seed[c] = regions.growable[c] && m4 < seed_kurtosis * m2 * m2;
         regions.median_abs_offset[c] = Median(&magnitudes);
       });
-  // Growth from the seeds through neighbouring regions under the growth bar: the regions
-  // connected to a seed through such regions, whatever the order of the centres.
+  return regions;
+}
+
+namespace {
+
+// The growable regions connected to a merged one through growable regions among each other's
+// kSidesGrowthNeighbors nearest centres, merged too.
+void GrowMergedRegions(int num_threads, SideRegions* regions) {
+  const int num_centres = static_cast<int>(regions->centres.size());
   const int neighbors = std::min(num_centres, kSidesGrowthNeighbors + 1);
   std::vector<int> adjacent(static_cast<size_t>(num_centres) * neighbors);
-  const energy::NearestNeighbors centre_search(regions.centres);
+  const energy::NearestNeighbors centre_search(regions->centres);
   centre_search.ForEach(num_centres, neighbors, num_threads,
-                        [&](int c) { return regions.centres[c]; },
+                        [&](int c) { return regions->centres[c]; },
                         [&](int c, const int* nearest, const double*, int found) {
                           std::copy_n(nearest, found,
                                       adjacent.data() + static_cast<size_t>(c) * neighbors);
                         });
   std::vector<int> front;
   for (int c = 0; c < num_centres; ++c) {
-    if (regions.seed[c]) {
-      regions.merged[c] = 1;
-      front.push_back(c);
-    }
+    if (regions->merged[c]) front.push_back(c);
   }
-  if (front.size() < kMinGrowthSeedShare * num_centres) front.clear();
   while (!front.empty()) {
     const int c = front.back();
     front.pop_back();
     for (int a = 0; a < neighbors; ++a) {
       const int d = adjacent[static_cast<size_t>(c) * neighbors + a];
-      if (regions.merged[d] || !may_grow[d]) continue;
-      regions.merged[d] = 1;
+      if (regions->merged[d] || !regions->growable[d]) continue;
+      regions->merged[d] = 1;
       front.push_back(d);
     }
   }
-  return regions;
+}
+
+}  // namespace
+
+bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads) {
+  size_t num_regions = 0, num_seeds = 0;
+  for (const SideRegions* regions : parts) {
+    num_regions += regions->seed.size();
+    num_seeds += std::count(regions->seed.begin(), regions->seed.end(), 1);
+  }
+  const bool merged = num_regions > 0 && num_seeds >= kMinMergedRegionShare * num_regions;
+  const bool grow = num_seeds >= kMinGrowthSeedShare * num_regions;
+  for (SideRegions* regions : parts) {
+    regions->merged.assign(regions->seed.size(), 0);
+    if (!merged) continue;
+    regions->merged = regions->seed;
+    if (grow) GrowMergedRegions(num_threads, regions);
+  }
+  return merged;
 }
 
 double OffsetDeviation(const energy::PointList& inputs, const energy::PointList& outputs,
@@ -168,62 +184,104 @@ energy::PointList SidesReference(const energy::PointList& outputs,
   return reference;
 }
 
-energy::PointList SeparateMergedSides(const energy::PointList& inputs,
-                                      const energy::PointList& outputs,
-                                      const energy::PointList& normals,
-                                      const std::vector<uint8_t>& movable, int num_threads,
-                                      int* moved) {
-  if (moved) *moved = 0;
-  energy::PointList result = outputs;
-  std::vector<int> anchors;  // the movable points with a normal
+namespace {
+
+// A part's anchors (its movable points with a normal), its reference, and every point's
+// offset from its anchor's reference plane, with the regions they give.
+struct MeasuredPart {
+  std::vector<int> anchors;
+  energy::PointList anchor_points;
+  energy::PointList reference;
+  std::vector<double> offset;
+  SideRegions regions;
+};
+
+MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
+  MeasuredPart measured;
+  std::vector<int>& anchors = measured.anchors;
+  const energy::PointList& outputs = part.outputs;
   for (size_t i = 0; i < outputs.size(); ++i) {
-    if (movable[i] && normals[i].squaredNorm() > 0.0) anchors.push_back(static_cast<int>(i));
+    if (part.movable[i] && part.normals[i].squaredNorm() > 0.0) {
+      anchors.push_back(static_cast<int>(i));
+    }
   }
   const int n = static_cast<int>(outputs.size());
-  if (static_cast<int>(anchors.size()) < kSidesRegionPoints) return result;
+  if (static_cast<int>(anchors.size()) < kSidesRegionPoints) return measured;
 
   // Every point's offset from its anchor's reference plane: its own, or its nearest anchor's.
   std::vector<int> anchor_of(n, -1);
   for (int i : anchors) anchor_of[i] = i;
-  energy::PointList anchor_points(anchors.size());
-  for (size_t r = 0; r < anchors.size(); ++r) anchor_points[r] = outputs[anchors[r]];
+  measured.anchor_points.resize(anchors.size());
+  for (size_t r = 0; r < anchors.size(); ++r) measured.anchor_points[r] = outputs[anchors[r]];
   std::vector<int> others;
   for (int i = 0; i < n; ++i) {
     if (anchor_of[i] < 0) others.push_back(i);
   }
   if (!others.empty()) {
-    const energy::NearestNeighbors anchor_search(anchor_points);
+    const energy::NearestNeighbors anchor_search(measured.anchor_points);
     anchor_search.ForEach(static_cast<int>(others.size()), 1, num_threads,
-                          [&](int r) { return inputs[others[r]]; },
+                          [&](int r) { return part.inputs[others[r]]; },
                           [&](int r, const int* nearest, const double*, int) {
                             anchor_of[others[r]] = anchors[nearest[0]];
                           });
   }
-  const double band =
-      kSidesReferenceBandDeviations * OffsetDeviation(inputs, outputs, normals, anchors);
-  const energy::PointList reference = SidesReference(outputs, normals, anchors, band, num_threads);
+  const double band = kSidesReferenceBandDeviations *
+                      OffsetDeviation(part.inputs, outputs, part.normals, anchors);
+  measured.reference = SidesReference(outputs, part.normals, anchors, band, num_threads);
   energy::PointList positions(n);
-  std::vector<double> offset(n);
+  measured.offset.resize(n);
   for (int i = 0; i < n; ++i) {
     const int a = anchor_of[i];
     positions[i] = outputs[a];
-    offset[i] = normals[a].dot(inputs[i] - reference[a]);
+    measured.offset[i] = part.normals[a].dot(part.inputs[i] - measured.reference[a]);
   }
+  measured.regions = MeasureSideRegions(positions, measured.offset, anchors, num_threads);
+  return measured;
+}
 
-  const SideRegions regions = MeasureSideRegions(positions, offset, anchors, num_threads);
-  if (!regions.MergedEnough()) return result;
-  const std::vector<int> region_of = regions.MergedRegionOf(anchor_points, num_threads);
-  // Each anchor of a merged region moves to the side its offset's sign picks.
-  int count = 0;
-  for (size_t r = 0; r < anchors.size(); ++r) {
+// Each anchor of a merged region moved to the side its offset's sign picks.
+energy::PointList MoveToSides(const SidesPart& part, const MeasuredPart& measured,
+                              int num_threads, int* moved) {
+  energy::PointList result = part.outputs;
+  const std::vector<int> region_of =
+      measured.regions.MergedRegionOf(measured.anchor_points, num_threads);
+  for (size_t r = 0; r < region_of.size(); ++r) {
     if (region_of[r] < 0) continue;
-    const int i = anchors[r];
-    const double half_gap = regions.sides[region_of[r]].half_gap;
-    result[i] = reference[i] + (offset[i] >= 0.0 ? half_gap : -half_gap) * normals[i];
-    ++count;
+    const int i = measured.anchors[r];
+    const double half_gap = measured.regions.sides[region_of[r]].half_gap;
+    const double side = measured.offset[i] >= 0.0 ? half_gap : -half_gap;
+    result[i] = measured.reference[i] + side * part.normals[i];
+    ++*moved;
+  }
+  return result;
+}
+
+}  // namespace
+
+std::vector<energy::PointList> SeparateMergedSides(const std::vector<SidesPart>& parts,
+                                                   int num_threads, int* moved) {
+  std::vector<MeasuredPart> measured;
+  std::vector<SideRegions*> regions;
+  for (const SidesPart& part : parts) measured.push_back(MeasurePart(part, num_threads));
+  for (MeasuredPart& m : measured) regions.push_back(&m.regions);
+  const bool merged = MarkMergedRegions(regions, num_threads);
+  int count = 0;
+  std::vector<energy::PointList> result;
+  for (size_t p = 0; p < parts.size(); ++p) {
+    result.push_back(merged ? MoveToSides(parts[p], measured[p], num_threads, &count)
+                            : parts[p].outputs);
   }
   if (moved) *moved = count;
   return result;
+}
+
+energy::PointList SeparateMergedSides(const energy::PointList& inputs,
+                                      const energy::PointList& outputs,
+                                      const energy::PointList& normals,
+                                      const std::vector<uint8_t>& movable, int num_threads,
+                                      int* moved) {
+  return SeparateMergedSides({SidesPart{inputs, outputs, normals, movable}}, num_threads,
+                             moved)[0];
 }
 
 }  // namespace lpd::solvers

@@ -79,28 +79,37 @@ struct TwoSides {
 bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides);
 
 // The regions of kSidesRegionPoints points around every kSidesRegionCentreStride-th point of
-// a pool, each with its offsets' moments about 0 read as two sides (a seed) or not, and the
-// regions grown from the seeds.
+// a pool, each with its offsets' moments about 0 read as two sides (a seed) or not.
 struct SideRegions {
   energy::PointList centres;
   std::vector<TwoSides> sides;            // set where under MaxGrowthKurtosis
-  std::vector<uint8_t> merged;            // the seeds and the regions grown from them
+  std::vector<uint8_t> growable;          // under MaxGrowthKurtosis
   std::vector<uint8_t> seed;              // under MaxMergedKurtosis
+  std::vector<uint8_t> merged;            // set by MarkMergedRegions
   std::vector<double> median_abs_offset;  // of the region's offsets
 
-  // Whether kMinMergedRegionShare or more of the regions are seeds.
-  bool MergedEnough() const;
   // For each of `points`, the region of its nearest centre where that region is merged, else
   // -1.
   std::vector<int> MergedRegionOf(const energy::PointList& points, int num_threads) const;
 };
 
 // `offsets[i]` is point i's offset from the surface at `positions[i]`; the regions are
-// centred on every kSidesRegionCentreStride-th point of `pool` (indices into positions).
-// Empty where fewer than kSidesRegionPoints positions are given.
+// centred on every kSidesRegionCentreStride-th point of `pool` (indices into positions), none
+// merged yet. Empty where fewer than kSidesRegionPoints positions are given.
 SideRegions MeasureSideRegions(const energy::PointList& positions,
                                const std::vector<double>& offsets, const std::vector<int>& pool,
                                int num_threads);
+
+// The merged regions of `parts`, measured each over its own points (the solved points of a
+// run and its extension to the points a subsample left out, subsample_extension.h), with the
+// seeds counted over all of them: the halves of one cloud are one surface, and counted apart,
+// a half's share reads under a bar that the cloud's passes (a plate 1.4 deviations thick at
+// 50K points and 3%: 18% and 43% seeds, docs/method.md, "One count for both halves"). Where
+// under kMinMergedRegionShare of all regions are seeds, none is merged and false is returned;
+// else the seeds are, and where kMinGrowthSeedShare or more are seeds, so are the growable
+// regions connected to a seed through growable regions among each other's
+// kSidesGrowthNeighbors nearest centres (of the same part), whatever the order of the centres.
+bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads);
 
 // Whether the probe reads each side's noise of merged sides (neighborhood_size.h):
 // kThinShareForNoWidening or more of its regions nearly split (the evidence that also keeps
@@ -150,12 +159,25 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                                  const energy::PointList& normals,
                                  const std::vector<int>& anchors, double band, int num_threads);
 
-// `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
-// movable point of a merged region moved along its normal to its reference (SidesReference,
-// with the band above) + sign(z) a (above). Points without movable[i] or a normal stay, but
-// their offsets count. Unchanged when fewer than kSidesRegionPoints points take part or under
-// kMinMergedRegionShare of the regions read as merged. `moved` (optional): how many points
-// moved. Deterministic for any thread count.
+// One set of points to tell sides apart in: `outputs` are the projections of `inputs` (same
+// order) with unit or zero `normals`; points without `movable` or a normal stay, but their
+// offsets count.
+struct SidesPart {
+  const energy::PointList& inputs;
+  const energy::PointList& outputs;
+  const energy::PointList& normals;
+  const std::vector<uint8_t>& movable;
+};
+
+// Each part's outputs with each movable point of a merged region (MarkMergedRegions over the
+// parts' regions) moved along its normal to its reference (SidesReference, with the band
+// above, from the part's own outputs) + sign(z) a (above). A part with fewer than
+// kSidesRegionPoints movable points with a normal has no regions and stays. `moved`
+// (optional): how many points moved. Deterministic for any thread count.
+std::vector<energy::PointList> SeparateMergedSides(const std::vector<SidesPart>& parts,
+                                                   int num_threads, int* moved = nullptr);
+
+// The same for one part.
 energy::PointList SeparateMergedSides(const energy::PointList& inputs,
                                       const energy::PointList& outputs,
                                       const energy::PointList& normals,

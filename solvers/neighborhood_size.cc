@@ -83,8 +83,8 @@ std::vector<double> SideResiduals(const energy::PointList& normalized,
     own_offset[query] = offsets[static_cast<size_t>(query) * (k + 1)];
     pool[query] = query;
   }
-  const SideRegions regions = MeasureSideRegions(probed, own_offset, pool, num_threads);
-  if (!regions.MergedEnough()) return {};
+  SideRegions regions = MeasureSideRegions(probed, own_offset, pool, num_threads);
+  if (!MarkMergedRegions({&regions}, num_threads)) return {};
   const std::vector<int> region_of = regions.MergedRegionOf(probed, num_threads);
   std::vector<double> scaled = residuals;
   for (int query = 0; query < queries; ++query) {

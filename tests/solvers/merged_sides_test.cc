@@ -152,7 +152,7 @@ TEST(MeasureSideRegions, EachRegionIsItsCentresNearestPointsByBruteForce) {
     offsets.push_back(m.inputs[i].z());
     pool.push_back(static_cast<int>(i));
   }
-  const SideRegions regions = MeasureSideRegions(positions, offsets, pool, 2);
+  SideRegions regions = MeasureSideRegions(positions, offsets, pool, 2);
   ASSERT_EQ(regions.centres.size(), (pool.size() + kSidesRegionCentreStride - 1) /
                                         kSidesRegionCentreStride);
   for (size_t c = 0; c < regions.centres.size(); c += 7) {
@@ -176,12 +176,12 @@ TEST(MeasureSideRegions, EachRegionIsItsCentresNearestPointsByBruteForce) {
     TwoSides expected;
     const bool seed = EstimateTwoSides(m2, m4, MaxMergedKurtosis(kSidesRegionPoints), &expected);
     ASSERT_EQ(regions.seed[c] != 0, seed) << "region " << c;
-    if (seed) {
-      EXPECT_NEAR(regions.sides[c].half_gap, expected.half_gap, 1e-12);
-      EXPECT_TRUE(regions.merged[c]);
-    }
+    if (seed) EXPECT_NEAR(regions.sides[c].half_gap, expected.half_gap, 1e-12);
   }
-  EXPECT_TRUE(regions.MergedEnough());
+  EXPECT_TRUE(MarkMergedRegions({&regions}, 2));
+  for (size_t c = 0; c < regions.centres.size(); ++c) {
+    if (regions.seed[c]) EXPECT_TRUE(regions.merged[c]) << "region " << c;
+  }
 }
 
 // Offsets cycling through a pattern of zeros and +-1 by index: a share p of zeros gives
@@ -192,30 +192,47 @@ double PatternOffset(int index, int period, int nonzero) {
   return phase % 2 == 0 ? 1.0 : -1.0;
 }
 
-TEST(MeasureSideRegions, RegionsUnderTheGrowthBarNextToMergedOnesAreMerged) {
-  // A strip of 300 x 20 points in three parts along x: kurtosis 2.5 (a seed's, under
-  // MaxMergedKurtosis = 2.747), 2.9 (between it and MaxGrowthKurtosis = 2.937; over a bar
-  // one standard error under 3, 2.874) and 3.
-  constexpr int kColumns = 300, kRows = 20;
+// A strip of 300 x 20 points, sheared (no ties in distance), with the offset of point
+// x * 20 + y given by offset(x, index).
+struct Strip {
   energy::PointList positions;
   std::vector<double> offsets;
   std::vector<int> pool;
+};
+
+template <typename Offset>
+Strip MakeStrip(const Offset& offset) {
+  constexpr int kColumns = 300, kRows = 20;
+  Strip strip;
   for (int x = 0; x < kColumns; ++x) {
     for (int y = 0; y < kRows; ++y) {
       const int index = x * kRows + y;
-      positions.emplace_back(x, y + 0.01 * x, 0.0);  // sheared: no ties in distance
-      const double z = x < 100 ? PatternOffset(index, 5, 2)     // 1 / 0.4
-                       : x < 200 ? PatternOffset(index, 29, 10)  // 1 / (10 / 29)
-                                 : PatternOffset(index, 6, 2);   // 1 / (1 / 3)
-      offsets.push_back(z);
-      pool.push_back(index);
+      strip.positions.emplace_back(x, y + 0.01 * x, 0.0);
+      strip.offsets.push_back(offset(x, index));
+      strip.pool.push_back(index);
     }
   }
-  ASSERT_LT(MaxMergedKurtosis(kSidesRegionPoints), 2.9 - 0.05);
-  ASSERT_GT(MaxGrowthKurtosis(kSidesRegionPoints), 2.9 + 0.02);
-  const SideRegions regions = MeasureSideRegions(positions, offsets, pool, 2);
-  // A region spans kSidesRegionPoints / kRows = 75 columns: those within 40 columns of a
-  // centre in the middle of a part see that part only.
+  return strip;
+}
+
+// Three parts along x: kurtosis 2.5 (a seed's, under MaxMergedKurtosis = 2.747) up to
+// column `seed_columns`, 2.9 (between it and MaxGrowthKurtosis = 2.937; over a bar one
+// standard error under 3, 2.874) up to column 200, and 3 beyond.
+Strip SeedsThenGrowableThenOneSheet(int seed_columns) {
+  return MakeStrip([seed_columns](int x, int index) {
+    if (x < seed_columns) return PatternOffset(index, 5, 2);  // 1 / 0.4
+    if (x >= 100 && x < 200) return PatternOffset(index, 29, 10);  // 1 / (10 / 29)
+    return PatternOffset(index, 6, 2);  // 1 / (1 / 3)
+  });
+}
+
+SideRegions Measure(const Strip& strip) {
+  return MeasureSideRegions(strip.positions, strip.offsets, strip.pool, 2);
+}
+
+// A region spans kSidesRegionPoints / 20 = 75 columns: those within 40 columns of a centre in
+// the middle of a part see that part only.
+void ExpectGrownIntoTheMiddleOnly(const SideRegions& regions) {
   int middle = 0, right = 0;
   for (size_t c = 0; c < regions.centres.size(); ++c) {
     const double x = regions.centres[c].x();
@@ -228,24 +245,47 @@ TEST(MeasureSideRegions, RegionsUnderTheGrowthBarNextToMergedOnesAreMerged) {
       EXPECT_FALSE(regions.merged[c]) << "x = " << x;
       ++right;
     }
-    if (x < 60) {
-      EXPECT_TRUE(regions.seed[c]) << "x = " << x;
-    }
   }
   EXPECT_GT(middle, 0);
   EXPECT_GT(right, 0);
-  // With seeds under kMinGrowthSeedShare of the regions (the first 45 columns' kurtosis 2.5:
-  // regions centred in the first 47 columns), nothing grows.
-  for (size_t i = 0; i < offsets.size(); ++i) {
-    if (positions[i].x() >= 45 && positions[i].x() < 100) {
-      offsets[i] = PatternOffset(static_cast<int>(i), 6, 2);
-    }
+}
+
+TEST(MarkMergedRegions, RegionsUnderTheGrowthBarNextToMergedOnesAreMerged) {
+  ASSERT_LT(MaxMergedKurtosis(kSidesRegionPoints), 2.9 - 0.05);
+  ASSERT_GT(MaxGrowthKurtosis(kSidesRegionPoints), 2.9 + 0.02);
+  SideRegions regions = Measure(SeedsThenGrowableThenOneSheet(100));
+  for (size_t c = 0; c < regions.centres.size(); ++c) {
+    if (regions.centres[c].x() < 60) EXPECT_TRUE(regions.seed[c]);
   }
-  const SideRegions few_seeds = MeasureSideRegions(positions, offsets, pool, 2);
+  EXPECT_TRUE(MarkMergedRegions({&regions}, 2));
+  ExpectGrownIntoTheMiddleOnly(regions);
+}
+
+TEST(MarkMergedRegions, NothingGrowsWithSeedsUnderTheGrowthShare) {
+  // Seeds in the first 45 columns: regions centred in the first 47.
+  SideRegions few_seeds = Measure(SeedsThenGrowableThenOneSheet(45));
   const auto seeds = std::count(few_seeds.seed.begin(), few_seeds.seed.end(), 1);
-  EXPECT_GT(seeds, 0);
+  EXPECT_GE(seeds, kMinMergedRegionShare * few_seeds.seed.size());
   EXPECT_LT(seeds, kMinGrowthSeedShare * few_seeds.seed.size());
+  EXPECT_TRUE(MarkMergedRegions({&few_seeds}, 2));
   EXPECT_EQ(few_seeds.merged, few_seeds.seed);
+}
+
+TEST(MarkMergedRegions, TheSeedSharesAreCountedOverAllParts) {
+  // The strip above with seeds under the growth share grows next to a part of seeds only...
+  SideRegions few_seeds = Measure(SeedsThenGrowableThenOneSheet(45));
+  SideRegions all_seeds = Measure(MakeStrip([](int, int index) {
+    return PatternOffset(index, 5, 2);
+  }));
+  EXPECT_TRUE(MarkMergedRegions({&few_seeds, &all_seeds}, 2));
+  ExpectGrownIntoTheMiddleOnly(few_seeds);
+  EXPECT_EQ(all_seeds.merged, all_seeds.seed);
+  // ... and is not merged at all next to three parts of one sheet each, under
+  // kMinMergedRegionShare of all regions.
+  const Strip sheet = MakeStrip([](int, int index) { return PatternOffset(index, 6, 2); });
+  std::vector<SideRegions> sheets = {Measure(sheet), Measure(sheet), Measure(sheet)};
+  EXPECT_FALSE(MarkMergedRegions({&few_seeds, &sheets[0], &sheets[1], &sheets[2]}, 2));
+  EXPECT_EQ(std::count(few_seeds.merged.begin(), few_seeds.merged.end(), 1), 0);
 }
 
 // The outputs of a part whose sides the graph split here and there: each follows its own
