@@ -6,7 +6,8 @@
 // while outputs on their own side stay; the reference surface and the offsets' deviation
 // against brute force; one Gaussian sheet does not move, also with its farthest points
 // flagged as outliers; the regions' moments and medians against brute-force nearest points,
-// and their growth from seeds through neighbouring regions between the two bars.
+// and their growth from seeds through neighbouring regions between the two bars, with the
+// seeds counted over both halves of a subsample run.
 #include "solvers/merged_sides.h"
 
 #include <algorithm>
@@ -478,6 +479,52 @@ TEST(SeparateMergedSides, FewerPointsThanARegionStay) {
   m.normals.resize(kSidesRegionPoints - 1);
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2), m.outputs);
+}
+
+// Two halves of one cloud, as a subsample run has: outputs on the plane z = 0, inputs at the
+// strips' offsets above them. The half with seeds under the growth's share moves in its
+// middle part only next to a half of seeds, and a half too small for a region stays.
+TEST(SeparateMergedSides, TheHalvesOfACloudAreJudgedTogether) {
+  struct Half {
+    energy::PointList inputs, outputs, normals;
+    std::vector<uint8_t> movable;
+  };
+  auto half_of = [](const Strip& strip) {
+    Half half{{}, strip.positions, {}, std::vector<uint8_t>(strip.positions.size(), 1)};
+    for (size_t i = 0; i < strip.positions.size(); ++i) {
+      half.inputs.push_back(strip.positions[i] + energy::Point3(0.0, 0.0, strip.offsets[i]));
+      half.normals.emplace_back(0.0, 0.0, 1.0);
+    }
+    return half;
+  };
+  const Half few_seeds = half_of(SeedsThenGrowableThenOneSheet(45));
+  const Half all_seeds =
+      half_of(MakeStrip([](int, int index) { return PatternOffset(index, 5, 2); }));
+  Half small = all_seeds;
+  small.inputs.resize(kSidesRegionPoints - 1);
+  small.outputs.resize(kSidesRegionPoints - 1);
+  small.normals.resize(kSidesRegionPoints - 1);
+  small.movable.resize(kSidesRegionPoints - 1);
+  auto part = [](const Half& half) {
+    return SidesPart{half.inputs, half.outputs, half.normals, half.movable};
+  };
+  // How many of the points in the middle part's columns 140-160 move.
+  auto moved_in_middle = [](const energy::PointList& result) {
+    int moved = 0;
+    for (const energy::Point3& p : result) moved += p.x() > 140 && p.x() < 160 && p.z() != 0.0;
+    return moved;
+  };
+  int moved_alone = 0, moved_together = 0;
+  const std::vector<energy::PointList> alone =
+      SeparateMergedSides({part(few_seeds), part(small)}, 2, &moved_alone);
+  EXPECT_EQ(moved_in_middle(alone[0]), 0);
+  EXPECT_GT(moved_alone, 0);  // the seeds of the first 45 columns
+  EXPECT_EQ(alone[1], small.outputs);
+  const std::vector<energy::PointList> together =
+      SeparateMergedSides({part(few_seeds), part(all_seeds)}, 2, &moved_together);
+  EXPECT_EQ(moved_in_middle(together[0]), 19 * 20);
+  EXPECT_EQ(together[1].size(), all_seeds.outputs.size());
+  EXPECT_GT(moved_together, moved_alone + static_cast<int>(all_seeds.outputs.size()) / 2);
 }
 
 }  // namespace
