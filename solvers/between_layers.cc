@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -34,25 +35,37 @@ struct Layers {
   bool found = false;
 };
 
-// The layers of the outputs `nearest[0, found)` around `origin` (between_layers.h).
+// The layers around `origin` of the outputs `candidates[0, found)`, nearest first
+// (between_layers.h): the normal from the kLayerNeighbors nearest, the layers from the
+// kLayerNeighbors nearest across it.
 Layers ReadLayers(const energy::PointList& outputs, const energy::PointList& normals,
-                  const int* nearest, int found, const energy::Point3& origin,
+                  const int* candidates, int found, const energy::Point3& origin,
                   double deviation) {
   Layers layers;
   layers.origin = origin;
   Eigen::Matrix3d normal_moment = Eigen::Matrix3d::Zero();
-  for (int b = 0; b < found; ++b) {
-    const energy::Point3& n = normals[nearest[b]];
+  for (int b = 0; b < std::min(found, kLayerNeighbors); ++b) {
+    const energy::Point3& n = normals[candidates[b]];
     normal_moment += n * n.transpose();
   }
   layers.normal =
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_moment).eigenvectors().col(2);
+  // (distance across the normal squared, candidate), ties by the candidate's rank.
+  thread_local std::vector<std::pair<double, int>> across;
+  across.resize(found);
+  for (int b = 0; b < found; ++b) {
+    const energy::Point3 step = outputs[candidates[b]] - origin;
+    const double height = layers.normal.dot(step);
+    across[b] = {step.squaredNorm() - height * height, b};
+  }
+  found = std::min(found, kLayerNeighbors);
+  std::partial_sort(across.begin(), across.begin() + found, across.end());
   thread_local std::vector<energy::Point3> local;
   thread_local std::vector<double> heights, sorted;
   local.resize(found);
   heights.resize(found);
   for (int b = 0; b < found; ++b) {
-    local[b] = outputs[nearest[b]];
+    local[b] = outputs[candidates[across[b].second]];
     heights[b] = layers.normal.dot(local[b] - origin);
   }
   sorted = heights;
@@ -123,7 +136,7 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
   for (int c = 0; c < num_centres; ++c) centre_points[c] = anchor_points[c * kLayerCentreStride];
   std::vector<Layers> layers(num_centres);
   const energy::NearestNeighbors search(anchor_points);
-  search.ForEach(num_centres, kLayerNeighbors, num_threads,
+  search.ForEach(num_centres, std::min(kLayerSearched * kLayerNeighbors, count), num_threads,
                  [&](int c) { return centre_points[c]; },
                  [&](int c, const int* nearest, const double*, int found) {
                    thread_local std::vector<int> neighbors;

@@ -10,13 +10,20 @@
 // point on one side barely reach the other, so the layers are read over kLayerNeighbors.
 //
 // Around every kLayerCentreStride-th output o_c, its kLayerNeighbors nearest outputs o_j
-// (normals n_j) give a layer normal c, the dominant eigenvector of sum n_j n_j^T, and heights
-// h_j = c.(o_j - o_c). Their exact 2-means split (runs of kMinLayerShare of the points or
-// more; energy::BestTwoRuns) reads as two layers where
+// (normals n_j) give a layer normal c, the dominant eigenvector of sum n_j n_j^T. Of its
+// kLayerSearched x kLayerNeighbors nearest, the kLayerNeighbors nearest across c (in the
+// plane normal to c) give heights h_j = c.(o_j - o_c): the nearest in space reach the other
+// layer over a smaller disk than their own where the gap is a good part of their radius (a
+// plate 2.8 noise deviations thick at 50K points: a fifth of them on the other side, and the
+// runs' footprints, below, differ as a curved patch's middle and rim do). Their exact 2-means
+// split (runs of kMinLayerShare of the points or more; energy::BestTwoRuns) reads as two
+// layers where
 //   - the runs' means are kMinLayerGapDeviations to kMaxLayerGapDeviations deviations of the
 //     inputs' offsets from their outputs apart (OffsetDeviation, merged_sides.h): the sides
-//     the split takes apart (2.8 deviations and up) but whose points it leaves between; far
-//     wider gaps are one sheet's middle and rim at noise far under the spacing;
+//     the split takes apart (2.8 noise deviations and up) but whose points it leaves between,
+//     up to 4.5 noise deviations apart where the offsets read 0.57 of the noise (the plate
+//     above); far wider gaps are one sheet's middle and rim at noise far under the
+//     spacing (20 deviations and more);
 //   - the separation (gap over the pooled within-run deviation) passes kMinLayerSeparation
 //     (a uniform spread splits at 3.46, one Gaussian sheet at about 2.7);
 //   - the footprint difference is under kMaxLayerFootprintDifference (sheet_split.h: two sides
@@ -41,12 +48,13 @@
 namespace lpd::solvers {
 
 constexpr int kLayerNeighbors = 400;
+constexpr int kLayerSearched = 2;
 // The layers are read around every kLayerCentreStride-th output; each output is tested
 // against those of its nearest centre.
 constexpr int kLayerCentreStride = 8;
 constexpr double kMinLayerShare = 0.15;
 constexpr double kMinLayerGapDeviations = 2.0;
-constexpr double kMaxLayerGapDeviations = 5.0;
+constexpr double kMaxLayerGapDeviations = 8.0;
 constexpr double kMinLayerSeparation = 4.0;
 constexpr double kMaxLayerFootprintDifference = 0.5;
 constexpr double kBetweenLayerSpreads = 1.5;

@@ -1,5 +1,6 @@
 // Points left between two output layers against their known sides: outputs between two layers
-// three noise deviations apart move onto a layer, most onto their own; points on a layer, one
+// three noise deviations apart move onto a layer, most onto their own, also where the layers
+// are as far apart as the neighbourhood reaches; points on a layer, one
 // flat sheet with the residual of a denoised output, and a curved cap sampled far finer than
 // its curvature do not move; the result does not depend on the thread count.
 #include "solvers/between_layers.h"
@@ -70,6 +71,26 @@ TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenTwoLayersMoveOntoALayerMostl
   EXPECT_GT(on_a_layer, 0.6 * between);
   // The input picks the wrong side with probability Phi(-1.5) = 6.7%.
   EXPECT_GT(on_own, 0.88 * on_a_layer);
+}
+
+// Layers 0.1 apart (three noise deviations), as far as the 400 nearest outputs reach (0.11):
+// around a point on a layer, the nearest in space cover a disk of radius 0.04 only of the
+// other layer, and the two runs' footprints differ as a curved patch's middle and rim do
+// (with them, 44% of the points between move). The nearest across the normal cover the same
+// disk on both layers.
+TEST(MoveBetweenLayerPointsOntoLayers, LayersAsFarApartAsTheNeighbourhoodReachesAreRead) {
+  const double half_gap = 0.05, sigma = 0.1 / 3.0;
+  const Layered m = TwoLayers(half_gap, sigma, 7);
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  const energy::PointList result =
+      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 2);
+  int between = 0, on_a_layer = 0;
+  for (size_t i = 0; i < result.size(); ++i) {
+    if (!m.between[i]) continue;
+    ++between;
+    on_a_layer += std::abs(std::abs(result[i].z()) - half_gap) < 1e-9;
+  }
+  EXPECT_GT(on_a_layer, 0.9 * between);
 }
 
 TEST(MoveBetweenLayerPointsOntoLayers, OneSheetDoesNotMove) {
