@@ -1,9 +1,11 @@
-// lpd: k-nearest-neighbour queries against a point list, run in parallel: the one k-NN loop
-// that the k-NN graph, the noise probe, the isolation test and the subsample extension share.
+// lpd: k-nearest-neighbour and within-radius queries against a point list, run in parallel:
+// the one k-NN loop that the k-NN graph, the noise probe, the isolation test and the subsample
+// extension share, and the radius loop of the layers between which points move.
 #ifndef LPD_ENERGY_NEAREST_NEIGHBORS_H_
 #define LPD_ENERGY_NEAREST_NEIGHBORS_H_
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "energy/point3.h"
@@ -40,6 +42,29 @@ class NearestNeighbors {
         const int found = static_cast<int>(
             tree_.knnSearch(p.data(), k, nearest.data(), squared_distances.data()));
         visit(q, nearest.data(), squared_distances.data(), found);
+      }
+    }
+  }
+
+  // For q in [0, count), on `num_threads` OpenMP threads: finds the points within
+  // sqrt(squared_radius(q)) of query(q) and calls visit(q, within) with their indices, in
+  // the order of the tree's traversal (the same for any thread count), not by distance.
+  template <typename Query, typename SquaredRadius, typename Visit>
+  void ForEachWithin(int count, int num_threads, const Query& query,
+                     const SquaredRadius& squared_radius, const Visit& visit) const {
+#pragma omp parallel num_threads(num_threads)
+    {
+      std::vector<std::pair<int, double>> matches;
+      std::vector<int> within;
+      const nanoflann::SearchParams unsorted(32, 0.0f, false);
+#pragma omp for schedule(static)
+      for (int q = 0; q < count; ++q) {
+        const Point3 p = query(q);
+        matches.clear();
+        tree_.radiusSearch(p.data(), squared_radius(q), matches, unsorted);
+        within.resize(matches.size());
+        for (size_t m = 0; m < matches.size(); ++m) within[m] = matches[m].first;
+        visit(q, within);
       }
     }
   }

@@ -35,38 +35,41 @@ struct Layers {
   bool found = false;
 };
 
-// The layers around `origin` of the outputs `candidates[0, found)`, nearest first
-// (between_layers.h): the normal from the kLayerNeighbors nearest, the layers from the
-// kLayerNeighbors nearest across it.
-Layers ReadLayers(const energy::PointList& outputs, const energy::PointList& normals,
-                  const int* candidates, int found, const energy::Point3& origin,
+// The dominant direction of the normals of the outputs `nearest[0, found)`.
+Eigen::Vector3d LayerNormal(const energy::PointList& normals, const int* nearest, int found) {
+  Eigen::Matrix3d normal_moment = Eigen::Matrix3d::Zero();
+  for (int b = 0; b < found; ++b) {
+    const energy::Point3& n = normals[nearest[b]];
+    normal_moment += n * n.transpose();
+  }
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_moment).eigenvectors().col(2);
+}
+
+// The layers along `normal` around `origin` of the kLayerNeighbors outputs nearest across it
+// among `candidates` (between_layers.h).
+Layers ReadLayers(const energy::PointList& outputs, const std::vector<int>& candidates,
+                  const Eigen::Vector3d& normal, const energy::Point3& origin,
                   double deviation) {
   Layers layers;
   layers.origin = origin;
-  Eigen::Matrix3d normal_moment = Eigen::Matrix3d::Zero();
-  for (int b = 0; b < std::min(found, kLayerNeighbors); ++b) {
-    const energy::Point3& n = normals[candidates[b]];
-    normal_moment += n * n.transpose();
-  }
-  layers.normal =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_moment).eigenvectors().col(2);
-  // (distance across the normal squared, candidate), ties by the candidate's rank.
+  layers.normal = normal;
+  // (distance across the normal squared, output), ties by the output's index.
   thread_local std::vector<std::pair<double, int>> across;
-  across.resize(found);
-  for (int b = 0; b < found; ++b) {
+  across.resize(candidates.size());
+  for (size_t b = 0; b < candidates.size(); ++b) {
     const energy::Point3 step = outputs[candidates[b]] - origin;
-    const double height = layers.normal.dot(step);
-    across[b] = {step.squaredNorm() - height * height, b};
+    const double height = normal.dot(step);
+    across[b] = {step.squaredNorm() - height * height, candidates[b]};
   }
-  found = std::min(found, kLayerNeighbors);
+  const int found = std::min(static_cast<int>(across.size()), kLayerNeighbors);
   std::partial_sort(across.begin(), across.begin() + found, across.end());
   thread_local std::vector<energy::Point3> local;
   thread_local std::vector<double> heights, sorted;
   local.resize(found);
   heights.resize(found);
   for (int b = 0; b < found; ++b) {
-    local[b] = outputs[candidates[across[b].second]];
-    heights[b] = layers.normal.dot(local[b] - origin);
+    local[b] = outputs[across[b].second];
+    heights[b] = normal.dot(local[b] - origin);
   }
   sorted = heights;
   std::sort(sorted.begin(), sorted.end());
@@ -135,16 +138,31 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
   energy::PointList centre_points(num_centres);
   for (int c = 0; c < num_centres; ++c) centre_points[c] = anchor_points[c * kLayerCentreStride];
   std::vector<Layers> layers(num_centres);
+  // The normal from each centre's kLayerNeighbors nearest; the layers from the anchors
+  // within sqrt(kLayerReachSquared) times the farthest of them.
+  std::vector<Eigen::Vector3d> normal(num_centres);
+  std::vector<double> reach(num_centres);
   const energy::NearestNeighbors search(anchor_points);
-  search.ForEach(num_centres, std::min(kLayerSearched * kLayerNeighbors, count), num_threads,
+  search.ForEach(num_centres, kLayerNeighbors, num_threads,
                  [&](int c) { return centre_points[c]; },
-                 [&](int c, const int* nearest, const double*, int found) {
+                 [&](int c, const int* nearest, const double* squared_distances, int found) {
                    thread_local std::vector<int> neighbors;
                    neighbors.resize(found);
                    for (int b = 0; b < found; ++b) neighbors[b] = anchors[nearest[b]];
-                   layers[c] = ReadLayers(outputs, normals, neighbors.data(), found,
-                                          centre_points[c], deviation);
+                   normal[c] = LayerNormal(normals, neighbors.data(), found);
+                   reach[c] = kLayerReachSquared * squared_distances[found - 1];
                  });
+  search.ForEachWithin(num_centres, num_threads, [&](int c) { return centre_points[c]; },
+                       [&](int c) { return reach[c]; },
+                       [&](int c, const std::vector<int>& within) {
+                         thread_local std::vector<int> candidates;
+                         candidates.resize(within.size());
+                         for (size_t b = 0; b < within.size(); ++b) {
+                           candidates[b] = anchors[within[b]];
+                         }
+                         layers[c] = ReadLayers(outputs, candidates, normal[c], centre_points[c],
+                                                deviation);
+                       });
   // Each anchor against the layers of its nearest centre.
   std::vector<uint8_t> moves(count, 0);
   const energy::NearestNeighbors centre_search(centre_points);

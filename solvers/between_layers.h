@@ -10,12 +10,16 @@
 // point on one side barely reach the other, so the layers are read over kLayerNeighbors.
 //
 // Around every kLayerCentreStride-th output o_c, its kLayerNeighbors nearest outputs o_j
-// (normals n_j) give a layer normal c, the dominant eigenvector of sum n_j n_j^T. Of its
-// kLayerSearched x kLayerNeighbors nearest, the kLayerNeighbors nearest across c (in the
-// plane normal to c) give heights h_j = c.(o_j - o_c): the nearest in space reach the other
-// layer over a smaller disk than their own where the gap is a good part of their radius (a
-// plate 2.8 noise deviations thick at 50K points: a fifth of them on the other side, and the
-// runs' footprints, below, differ as a curved patch's middle and rim do). Their exact 2-means
+// (normals n_j) give a layer normal c, the dominant eigenvector of sum n_j n_j^T. Of the
+// outputs within sqrt(kLayerReachSquared) times the farthest of them, the kLayerNeighbors
+// nearest across c (in the plane normal to c) give heights h_j = c.(o_j - o_c): the nearest
+// in space reach the other layer over a smaller disk than their own where the gap is a good
+// part of their radius r (a plate 2.8 noise deviations thick at 50K points: a fifth of them
+// on the other side, and the runs' footprints, below, differ as a curved patch's middle and
+// rim do). Around a point on one of two layers a gap g apart, the disk of radius rho across
+// that holds kLayerNeighbors outputs on both has rho^2 = r^2 - g^2 / 2 (r^2 / 2 where the
+// nearest do not reach the other layer), and the ball of radius sqrt(rho^2 + g^2) takes it
+// in: within sqrt(2) r for gaps up to 1.2 r. Their exact 2-means
 // split (runs of kMinLayerShare of the points or more; energy::BestTwoRuns) reads as two
 // layers where
 //   - the runs' means are kMinLayerGapDeviations to kMaxLayerGapDeviations deviations of the
@@ -48,7 +52,7 @@
 namespace lpd::solvers {
 
 constexpr int kLayerNeighbors = 400;
-constexpr int kLayerSearched = 2;
+constexpr double kLayerReachSquared = 2.0;
 // The layers are read around every kLayerCentreStride-th output; each output is tested
 // against those of its nearest centre.
 constexpr int kLayerCentreStride = 8;
