@@ -93,6 +93,7 @@ namespace {
 // kSidesGrowthNeighbors nearest centres, merged too.
 void GrowMergedRegions(int num_threads, SideRegions* regions) {
   const int num_centres = static_cast<int>(regions->centres.size());
+  if (num_centres == 0) return;
   const int neighbors = std::min(num_centres, kSidesGrowthNeighbors + 1);
   std::vector<int> adjacent(static_cast<size_t>(num_centres) * neighbors);
   const energy::NearestNeighbors centre_search(regions->centres);

@@ -521,9 +521,10 @@ TEST(SeparateMergedSides, TheHalvesOfACloudAreJudgedTogether) {
   EXPECT_GT(moved_alone, 0);  // the seeds of the first 45 columns
   EXPECT_EQ(alone[1], small.outputs);
   const std::vector<energy::PointList> together =
-      SeparateMergedSides({part(few_seeds), part(all_seeds)}, 2, &moved_together);
+      SeparateMergedSides({part(few_seeds), part(all_seeds), part(small)}, 2, &moved_together);
   EXPECT_EQ(moved_in_middle(together[0]), 19 * 20);
   EXPECT_EQ(together[1].size(), all_seeds.outputs.size());
+  EXPECT_EQ(together[2], small.outputs);
   EXPECT_GT(moved_together, moved_alone + static_cast<int>(all_seeds.outputs.size()) / 2);
 }
 
