@@ -315,15 +315,10 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   }
   energy::PointList extended_points, extended_normals;
   PointIndicators extended;
-  energy::PointList extended_inputs;  // normalized frame
   if (!state.left_out.empty()) {
     ExtendToPoints(problem, state.variables, surfaces, agreement_scale, result.indicators,
                    result.summary.mu_l, options.final_step, state.left_out_points,
                    options.settings.num_threads, &extended_points, &extended_normals, &extended);
-    extended_inputs.resize(state.left_out_points.size());
-    for (size_t q = 0; q < extended_inputs.size(); ++q) {
-      extended_inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
-    }
     if (feed_back) {
       energy::PointList points(extended_points.size());
       std::vector<uint8_t> extended_movable(points.size());
@@ -348,6 +343,10 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
                                 estimates.read_sigma > kCalibratedReadRatio * estimates.spacing;
     std::vector<SidesInput> sets = {
         {problem.points, result.normals, result.indicators.is_outlier, &result.projected}};
+    energy::PointList extended_inputs(state.left_out_points.size());  // normalized frame
+    for (size_t q = 0; q < extended_inputs.size(); ++q) {
+      extended_inputs[q] = problem.frame.ToNormalized(state.left_out_points[q]);
+    }
     if (!state.left_out.empty()) {
       sets.push_back({extended_inputs, extended_normals, extended.is_outlier, &extended_points});
     }
