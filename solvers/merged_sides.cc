@@ -122,15 +122,13 @@ void GrowMergedRegions(int num_threads, SideRegions* regions) {
 }  // namespace
 
 bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads) {
-  size_t num_regions = 0, num_seeds = 0, num_growable = 0;
+  size_t num_regions = 0, num_seeds = 0;
   for (const SideRegions* regions : parts) {
     num_regions += regions->seed.size();
     num_seeds += std::count(regions->seed.begin(), regions->seed.end(), 1);
-    num_growable += std::count(regions->growable.begin(), regions->growable.end(), 1);
   }
   const bool merged = num_regions > 0 && num_seeds >= kMinMergedRegionShare * num_regions;
-  const bool grow = num_seeds >= kMinGrowthSeedShare * num_regions ||
-                    num_growable >= kMinGrowthGrowableShare * num_regions;
+  const bool grow = num_seeds >= kMinGrowthSeedShare * num_regions;
   for (SideRegions* regions : parts) {
     regions->merged.assign(regions->seed.size(), 0);
     if (!merged) continue;

@@ -57,16 +57,10 @@ constexpr double kMinMergedRegionShare = 0.1;
 // growth stopped there, leaving patches on the mid-surface. Neighbouring regions share most
 // of their points, so chance seeds on one sheet would grow as well: the growth runs only
 // where kMinGrowthSeedShare of the regions are seeds (docs/method.md, "The merged regions
-// grow"), or where kMinGrowthGrowableShare of them read under the growth bar. Sides 1.4
-// deviations apart read under 2.78 as often as over it, so their seed share is a coin toss
-// about the bar (a plate at 50K and 3%: 19-39% on five draws), but 86-93% of their regions
-// read under 2.94. One sheet's regions do in 31% of cases by chance (the benchmark's meshes:
-// 0-38%), a part the graph split already, with merged patches, in 60-62% (docs/method.md,
-// "Most regions under the growth bar").
+// grow").
 constexpr int kSidesGrowthNeighbors = 6;
 constexpr double kSidesGrowthStandardErrors = 0.5;
 constexpr double kMinGrowthSeedShare = 0.2;
-constexpr double kMinGrowthGrowableShare = 0.75;
 
 // The kurtosis under which a region of `region_points` offsets counts as two sides.
 double MaxMergedKurtosis(int region_points);
@@ -112,10 +106,9 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
 // a half's share reads under a bar that the cloud's passes (a plate 1.4 deviations thick at
 // 50K points and 3%: 18% and 43% seeds, docs/method.md, "One count for both halves"). Where
 // under kMinMergedRegionShare of all regions are seeds, none is merged and false is returned;
-// else the seeds are, and where kMinGrowthSeedShare or more are seeds or
-// kMinGrowthGrowableShare or more are growable, so are the growable regions connected to a
-// seed through growable regions among each other's kSidesGrowthNeighbors nearest centres
-// (of the same part), whatever the order of the centres.
+// else the seeds are, and where kMinGrowthSeedShare or more are seeds, so are the growable
+// regions connected to a seed through growable regions among each other's
+// kSidesGrowthNeighbors nearest centres (of the same part), whatever the order of the centres.
 bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads);
 
 // Whether the probe reads each side's noise of merged sides (neighborhood_size.h):
