@@ -50,7 +50,7 @@ std::vector<int> SideRegions::MergedRegionOf(const energy::PointList& points,
 
 SideRegions MeasureSideRegions(const energy::PointList& positions,
                                const std::vector<double>& offsets, const std::vector<int>& pool,
-                               int num_threads) {
+                               int num_threads, const std::vector<uint8_t>* split) {
   SideRegions regions;
   if (static_cast<int>(positions.size()) < kSidesRegionPoints) return regions;
   std::vector<int> centres;
@@ -71,8 +71,10 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
       [&](int c) { return regions.centres[c]; },
       [&](int c, const int* nearest, const double*, int found) {
         double m2 = 0.0, m4 = 0.0;
+        int split_points = 0;
         std::vector<double> magnitudes(found);
         for (int j = 0; j < found; ++j) {
+          if (split) split_points += (*split)[nearest[j]];
           const double z = offsets[nearest[j]];
           m2 += z * z;
           m4 += z * z * z * z;
@@ -80,7 +82,8 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
         }
         m2 /= found;
         m4 /= found;
-        regions.growable[c] = EstimateTwoSides(m2, m4, growth_kurtosis, &regions.sides[c]);
+        regions.growable[c] = split_points < kSidesSplitRegionShare * found &&
+                              EstimateTwoSides(m2, m4, growth_kurtosis, &regions.sides[c]);
         regions.seed[c] = regions.growable[c] && m4 < seed_kurtosis * m2 * m2;
         regions.median_abs_offset[c] = Median(&magnitudes);
       });
@@ -151,8 +154,10 @@ double OffsetDeviation(const energy::PointList& inputs, const energy::PointList&
 
 energy::PointList SidesReference(const energy::PointList& outputs,
                                  const energy::PointList& normals,
-                                 const std::vector<int>& anchors, double band, int num_threads) {
+                                 const std::vector<int>& anchors, double band, int num_threads,
+                                 std::vector<uint8_t>* other_layer) {
   energy::PointList reference = outputs;
+  if (other_layer) other_layer->assign(outputs.size(), 0);
   const int count = static_cast<int>(anchors.size());
   if (!(band > 0.0) || count < 2) return reference;
   energy::PointList anchor_points(count);
@@ -167,12 +172,19 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                    // (distance across n squared, height along n) of the candidates
                    thread_local std::vector<std::pair<double, double>> candidates;
                    candidates.clear();
+                   int facing = 0;
                    for (int b = 0; b < found; ++b) {
                      if (std::abs(n.dot(normals[anchors[nearest[b]]])) < min_cosine) continue;
+                     ++facing;
                      const energy::Point3 step = anchor_points[nearest[b]] - outputs[i];
                      const double height = n.dot(step);
                      if (!(std::abs(height) < band)) continue;
                      candidates.emplace_back(step.squaredNorm() - height * height, height);
+                   }
+                   if (other_layer && facing > 0 &&
+                       facing - static_cast<int>(candidates.size()) >=
+                           kSidesOtherLayerShare * facing) {
+                     (*other_layer)[i] = 1;
                    }
                    const size_t used =
                        std::min(candidates.size(), static_cast<size_t>(kSidesReferenceNeighbors));
@@ -228,7 +240,9 @@ MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
   }
   const double band = kSidesReferenceBandDeviations *
                       OffsetDeviation(part.inputs, outputs, part.normals, anchors);
-  measured.reference = SidesReference(outputs, part.normals, anchors, band, num_threads);
+  std::vector<uint8_t> other_layer;
+  measured.reference =
+      SidesReference(outputs, part.normals, anchors, band, num_threads, &other_layer);
   energy::PointList positions(n);
   measured.offset.resize(n);
   for (int i = 0; i < n; ++i) {
@@ -236,7 +250,10 @@ MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
     positions[i] = outputs[a];
     measured.offset[i] = part.normals[a].dot(part.inputs[i] - measured.reference[a]);
   }
-  measured.regions = MeasureSideRegions(positions, measured.offset, anchors, num_threads);
+  std::vector<uint8_t> split(n);
+  for (int i = 0; i < n; ++i) split[i] = other_layer[anchor_of[i]];
+  measured.regions =
+      MeasureSideRegions(positions, measured.offset, anchors, num_threads, &split);
   return measured;
 }
 

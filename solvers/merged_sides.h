@@ -98,7 +98,10 @@ struct SideRegions {
 // merged yet. Empty where fewer than kSidesRegionPoints positions are given.
 SideRegions MeasureSideRegions(const energy::PointList& positions,
                                const std::vector<double>& offsets, const std::vector<int>& pool,
-                               int num_threads);
+                               int num_threads, const std::vector<uint8_t>* split = nullptr);
+// `split` (optional, per position): the point's output sees another output layer beyond the
+// reference's band (SidesReference). A region where kSidesSplitRegionShare or more of its
+// points do is neither a seed nor growable: its sides are split already (below).
 
 // The merged regions of `parts`, measured each over its own points (the solved points of a
 // run and its extension to the points a subsample left out, subsample_extension.h), with the
@@ -146,6 +149,16 @@ constexpr int kSidesReferenceNeighbors = 60;
 constexpr int kSidesReferenceSearched = 2;
 constexpr double kSidesReferenceMaxAngleDegrees = 20.0;
 constexpr double kSidesReferenceBandDeviations = 2.0;
+// A part the graph split cleanly has its outputs on two layers, each point on the layer
+// nearer its input. The offsets from a layer are then the noise cut off where it crossed the
+// mid-plane, and their kurtosis reads low: 2.76 for sides 4.2 deviations apart, 2.82 for 3
+// (simulated), at the seed bar. On plates 4.2 deviations thick at 10K and 20K points, 0-36%
+// of the regions read as seeds; moved to +-a, the points left their layers (P2M 1.09 ->
+// 1.49 on one draw). An output sees another layer where kSidesOtherLayerShare or more of its
+// searched neighbours facing its way lie beyond the band; merged sides' outputs lie within
+// it (docs/method.md, "Sides split already").
+constexpr double kSidesOtherLayerShare = 0.25;
+constexpr double kSidesSplitRegionShare = 0.5;
 
 // kMedianAbsToSigma times the median of |n_i.(inputs[i] - outputs[i])| over the anchors
 // (indices into all three, normals of unit length); 0 without anchors.
@@ -157,7 +170,10 @@ double OffsetDeviation(const energy::PointList& inputs, const energy::PointList&
 // of the points; 0: the outputs themselves. Deterministic for any thread count.
 energy::PointList SidesReference(const energy::PointList& outputs,
                                  const energy::PointList& normals,
-                                 const std::vector<int>& anchors, double band, int num_threads);
+                                 const std::vector<int>& anchors, double band, int num_threads,
+                                 std::vector<uint8_t>* other_layer = nullptr);
+// `other_layer` (optional, per output): whether the anchor sees another layer (above); 0 for
+// the other outputs.
 
 // One set of points to tell sides apart in: `outputs` are the projections of `inputs` (same
 // order) with unit or zero `normals`; points without `movable` or a normal stay, but their

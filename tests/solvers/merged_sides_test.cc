@@ -356,6 +356,31 @@ TEST(SeparateMergedSides, OutputsOnTwoLayersCloserThanTheSidesAreSeparated) {
   EXPECT_LT(MeanDistanceToSide(separated, m.side), 0.4 * sigma);
 }
 
+// A part the graph split cleanly, its sides 4.2 noise deviations apart, each output on the
+// layer nearer its input: the offsets from a layer are the noise cut off where it crosses
+// the mid-plane, whose kurtosis reads about 2.75 (simulated), so about half the regions read
+// under the seed bar. Every output sees the other layer beyond the band, and nothing moves.
+TEST(SeparateMergedSides, OutputsOnLayersFartherApartThanTheBandStay) {
+  const double sigma = 0.002;
+  Merged m = MergedSheet(2.1 * sigma, sigma, 23);
+  for (size_t i = 0; i < m.outputs.size(); ++i) {
+    m.outputs[i].z() = (m.inputs[i].z() >= 0.0 ? 2.1 : -2.1) * sigma;
+  }
+  std::vector<int> all(m.outputs.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const double band =
+      kSidesReferenceBandDeviations * OffsetDeviation(m.inputs, m.outputs, m.normals, all);
+  EXPECT_LT(band, 2.0 * sigma);
+  std::vector<uint8_t> other_layer;
+  SidesReference(m.outputs, m.normals, all, band, 2, &other_layer);
+  EXPECT_EQ(std::count(other_layer.begin(), other_layer.end(), 1), other_layer.size());
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  int moved = -1;
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved),
+            m.outputs);
+  EXPECT_EQ(moved, 0);
+}
+
 TEST(OffsetDeviation, IsTheScaledMedianOffsetAlongTheNormalOverTheAnchorsByBruteForce) {
   // Offsets of deviation 0.003 along tilted normals, with in-plane slips that must not count;
   // the points that are not anchors have offsets 100 times larger.
@@ -402,10 +427,14 @@ TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteFor
     if (i % 7 != 0) anchors.push_back(i);  // the others have no say and stay
   }
   const double band = 0.005;
-  const energy::PointList reference = SidesReference(outputs, normals, anchors, band, 2);
-  EXPECT_EQ(SidesReference(outputs, normals, anchors, band, 1), reference);
+  std::vector<uint8_t> other_layer, other_layer_one_thread;
+  const energy::PointList reference =
+      SidesReference(outputs, normals, anchors, band, 2, &other_layer);
+  EXPECT_EQ(SidesReference(outputs, normals, anchors, band, 1, &other_layer_one_thread),
+            reference);
+  EXPECT_EQ(other_layer_one_thread, other_layer);
   const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
-  int moved = 0;
+  int moved = 0, flagged = 0, tested = 0;
   for (size_t i = 0; i < outputs.size(); ++i) {
     if (i % 7 == 0) {
       EXPECT_EQ(reference[i], outputs[i]);
@@ -418,13 +447,20 @@ TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteFor
     for (int j : anchors) by_distance.emplace_back((outputs[j] - outputs[i]).squaredNorm(), j);
     std::sort(by_distance.begin(), by_distance.end());
     std::vector<std::pair<double, double>> across;  // (squared distance across n, height)
+    int facing = 0;
     for (int b = 0; b < kSidesReferenceSearched * kSidesReferenceNeighbors; ++b) {
       const int j = by_distance[b].second;
       if (std::abs(normals[i].dot(normals[j])) < min_cosine) continue;
+      ++facing;
       const double h = normals[i].dot(outputs[j] - outputs[i]);
       if (std::abs(h) >= band) continue;
       across.emplace_back(by_distance[b].first - h * h, h);
     }
+    // Another layer: kSidesOtherLayerShare or more of the facing neighbours beyond the band.
+    const int beyond = facing - static_cast<int>(across.size());
+    EXPECT_EQ(other_layer[i] != 0, beyond >= kSidesOtherLayerShare * facing) << "point " << i;
+    flagged += other_layer[i];
+    ++tested;
     std::sort(across.begin(), across.end());
     double sum = 0.0;
     int used = 0;
@@ -437,6 +473,8 @@ TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteFor
     moved += reference[i] != outputs[i];
   }
   EXPECT_GT(moved, 300);
+  EXPECT_GT(flagged, 0);
+  EXPECT_LT(flagged, tested);
   // No noise estimate: the outputs themselves.
   EXPECT_EQ(SidesReference(outputs, normals, anchors, 0.0, 2), outputs);
 }
