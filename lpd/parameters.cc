@@ -427,9 +427,10 @@ std::vector<Parameter> FinalStepParameters() {
             "where the input points' offsets from the output (from the mean of its 60 outputs "
             "nearest across its normal within two deviations of the inputs' offsets along it) "
             "read as two sides of a thin part merged into one (kurtosis under 2.75 over 1,500 "
-            "points), move each output point to the side its offset's sign picks; only where a "
-            "tenth or more of these regions read as merged (where a fifth do, neighbouring "
-            "regions under 2.94 join them); and where the noise reads wider than 1.15 spacings, "
+            "points; not where half their points see another output layer beyond that band), "
+            "move each output point to the side its offset's sign picks; only where a tenth or "
+            "more of these regions read as merged (where 15% do, neighbouring regions under "
+            "2.94 join them); and where the noise reads wider than 1.15 spacings, "
             "move outputs left between two output layers onto the layer nearer their input",
             "", "false"},
            [](O& o) -> bool& { return o.final_step.separate_merged_sides; }),

@@ -218,14 +218,18 @@ Strip MakeStrip(const Offset& offset) {
 
 // Three parts along x: kurtosis 2.5 (a seed's, under MaxMergedKurtosis = 2.747) up to
 // column `seed_columns`, 2.9 (between it and MaxGrowthKurtosis = 2.937; over a bar one
-// standard error under 3, 2.874) up to column 200, and 3 beyond.
-Strip SeedsThenGrowableThenOneSheet(int seed_columns) {
-  return MakeStrip([seed_columns](int x, int index) {
+// standard error under 3, 2.874) from column `growable_from` up to 200, and 3 elsewhere.
+Strip SeedsThenGrowableThenOneSheet(int seed_columns, int growable_from = 100) {
+  return MakeStrip([=](int x, int index) {
     if (x < seed_columns) return PatternOffset(index, 5, 2);  // 1 / 0.4
-    if (x >= 100 && x < 200) return PatternOffset(index, 29, 10);  // 1 / (10 / 29)
+    if (x >= growable_from && x < 200) return PatternOffset(index, 29, 10);  // 1 / (10 / 29)
     return PatternOffset(index, 6, 2);  // 1 / (1 / 3)
   });
 }
+
+// Seeds in the first 36 columns (regions centred in the first 38: a share between
+// kMinMergedRegionShare and kMinGrowthSeedShare), 44 columns from the growable part.
+Strip FewSeedsThenGrowableThenOneSheet() { return SeedsThenGrowableThenOneSheet(36, 80); }
 
 SideRegions Measure(const Strip& strip) {
   return MeasureSideRegions(strip.positions, strip.offsets, strip.pool, 2);
@@ -263,8 +267,7 @@ TEST(MarkMergedRegions, RegionsUnderTheGrowthBarNextToMergedOnesAreMerged) {
 }
 
 TEST(MarkMergedRegions, NothingGrowsWithSeedsUnderTheGrowthShare) {
-  // Seeds in the first 45 columns: regions centred in the first 47.
-  SideRegions few_seeds = Measure(SeedsThenGrowableThenOneSheet(45));
+  SideRegions few_seeds = Measure(FewSeedsThenGrowableThenOneSheet());
   const auto seeds = std::count(few_seeds.seed.begin(), few_seeds.seed.end(), 1);
   EXPECT_GE(seeds, kMinMergedRegionShare * few_seeds.seed.size());
   EXPECT_LT(seeds, kMinGrowthSeedShare * few_seeds.seed.size());
@@ -274,7 +277,7 @@ TEST(MarkMergedRegions, NothingGrowsWithSeedsUnderTheGrowthShare) {
 
 TEST(MarkMergedRegions, TheSeedSharesAreCountedOverAllParts) {
   // The strip above with seeds under the growth share grows next to a part of seeds only...
-  SideRegions few_seeds = Measure(SeedsThenGrowableThenOneSheet(45));
+  SideRegions few_seeds = Measure(FewSeedsThenGrowableThenOneSheet());
   SideRegions all_seeds = Measure(MakeStrip([](int, int index) {
     return PatternOffset(index, 5, 2);
   }));
@@ -535,7 +538,7 @@ TEST(SeparateMergedSides, TheHalvesOfACloudAreJudgedTogether) {
     }
     return half;
   };
-  const Half few_seeds = half_of(SeedsThenGrowableThenOneSheet(45));
+  const Half few_seeds = half_of(FewSeedsThenGrowableThenOneSheet());
   const Half all_seeds =
       half_of(MakeStrip([](int, int index) { return PatternOffset(index, 5, 2); }));
   Half small = all_seeds;
@@ -556,7 +559,7 @@ TEST(SeparateMergedSides, TheHalvesOfACloudAreJudgedTogether) {
   const std::vector<energy::PointList> alone =
       SeparateMergedSides({part(few_seeds), part(small)}, 2, &moved_alone);
   EXPECT_EQ(moved_in_middle(alone[0]), 0);
-  EXPECT_GT(moved_alone, 0);  // the seeds of the first 45 columns
+  EXPECT_GT(moved_alone, 0);  // the seeds of the first 36 columns
   EXPECT_EQ(alone[1], small.outputs);
   const std::vector<energy::PointList> together =
       SeparateMergedSides({part(few_seeds), part(all_seeds), part(small)}, 2, &moved_together);
