@@ -99,12 +99,12 @@ struct SideRegions {
 // `offsets[i]` is point i's offset from the surface at `positions[i]`; the regions are
 // centred on every kSidesRegionCentreStride-th point of `pool` (indices into positions), none
 // merged yet. Empty where fewer than kSidesRegionPoints positions are given.
-SideRegions MeasureSideRegions(const energy::PointList& positions,
-                               const std::vector<double>& offsets, const std::vector<int>& pool,
-                               int num_threads, const std::vector<uint8_t>* split = nullptr);
 // `split` (optional, per position): the point's output sees another output layer beyond the
 // reference's band (SidesReference). A region where kSidesSplitRegionShare or more of its
 // points do is neither a seed nor growable: its sides are split already (below).
+SideRegions MeasureSideRegions(const energy::PointList& positions,
+                               const std::vector<double>& offsets, const std::vector<int>& pool,
+                               int num_threads, const std::vector<uint8_t>* split = nullptr);
 
 // The merged regions of `parts`, measured each over its own points (the solved points of a
 // run and its extension to the points a subsample left out, subsample_extension.h), with the
@@ -171,12 +171,12 @@ double OffsetDeviation(const energy::PointList& inputs, const energy::PointList&
 // The reference above for the `anchors` (indices into outputs, each with a unit normal),
 // from the outputs of the anchors only; every other entry is its output. `band` in the frame
 // of the points; 0: the outputs themselves. Deterministic for any thread count.
+// `other_layer` (optional, per output): whether the anchor sees another layer (above); 0 for
+// the other outputs.
 energy::PointList SidesReference(const energy::PointList& outputs,
                                  const energy::PointList& normals,
                                  const std::vector<int>& anchors, double band, int num_threads,
                                  std::vector<uint8_t>* other_layer = nullptr);
-// `other_layer` (optional, per output): whether the anchor sees another layer (above); 0 for
-// the other outputs.
 
 // One set of points to tell sides apart in: `outputs` are the projections of `inputs` (same
 // order) with unit or zero `normals`; points without `movable` or a normal stay, but their
