@@ -10,7 +10,7 @@ namespace lpd::solvers {
 namespace {
 
 constexpr int kNeighbors = 10;  // pushing neighbours of a point
-constexpr double kStep = 0.1;   // largest move per round, in units of h
+constexpr double kStep = 0.4;   // largest move per round, in units of h
 // A point with a neighbour whose normal is more than 30 degrees off its own sits at a sharp
 // edge and stays: its tangent plane would carry it off the other face.
 constexpr double kMinNormalCosine = 0.866;

@@ -47,14 +47,15 @@ TEST(EvenSpacing, EvensOutASquareWithinItsPlane) {
   for (const energy::Point3& p : spread) EXPECT_EQ(p.z(), 0.0);
   const std::vector<double> before = NearestDistances(points);
   const std::vector<double> after = NearestDistances(spread);
-  // Measured: the nearest distances vary by 51% (coefficient of variation) before, 15%
-  // after; the closest pair is 27x farther apart.
-  EXPECT_LT(CoefficientOfVariation(after), 0.6 * CoefficientOfVariation(before));
+  // Measured: the nearest distances vary by 51% (coefficient of variation) before, 10%
+  // after (15% with moves of at most a tenth of the kernel per round); the closest pair is
+  // 36x farther apart.
+  EXPECT_LT(CoefficientOfVariation(after), 0.25 * CoefficientOfVariation(before));
   EXPECT_GT(*std::min_element(after.begin(), after.end()),
             2.0 * *std::min_element(before.begin(), before.end()));
 }
 
-TEST(EvenSpacing, EachPointMovesAtMostATenthOfTheKernelPerRound) {
+TEST(EvenSpacing, EachPointMovesAtMostFourTenthsOfTheKernelPerRound) {
   const energy::PointList points = RandomSquare(500, 5);
   const energy::PointList normals(points.size(), energy::Point3(0, 0, 1));
   const std::vector<uint8_t> movable(points.size(), 1);
@@ -63,7 +64,7 @@ TEST(EvenSpacing, EachPointMovesAtMostATenthOfTheKernelPerRound) {
   const double h = 2.0 * nearest[nearest.size() / 2];
   const energy::PointList spread = SpreadEvenly(points, normals, movable, 3, 1);
   for (size_t i = 0; i < points.size(); ++i) {
-    EXPECT_LE((spread[i] - points[i]).norm(), 3 * 0.1 * h * (1 + 1e-12));
+    EXPECT_LE((spread[i] - points[i]).norm(), 3 * 0.4 * h * (1 + 1e-12));
   }
 }
 
