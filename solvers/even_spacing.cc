@@ -12,7 +12,8 @@ namespace {
 constexpr int kNeighbors = 10;  // pushing neighbours of a point
 constexpr double kStep = 0.4;   // largest move per round, in units of h
 // A point with a neighbour whose normal is more than 30 degrees off its own sits at a sharp
-// edge and stays: its tangent plane would carry it off the other face.
+// edge: its tangent plane would carry it off the other face, so it moves along the edge only.
+// Where two such neighbours give edges more than 30 degrees apart (a corner), it stays.
 constexpr double kMinNormalCosine = 0.866;
 
 }  // namespace
@@ -47,22 +48,32 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
                    [&](int r, const int* nearest, const double* squared, int found) {
                      const energy::Point3& p = current[r];
                      const energy::Point3& n = normals[rows[r]];
+                     next[r] = p;
+                     if (n.squaredNorm() == 0.0) return;
                      energy::Point3 force = energy::Point3::Zero();
+                     energy::Point3 edge = energy::Point3::Zero();  // zero: no sharp edge
+                     double edge_cosine = 1.0;
                      for (int a = 0; a < found; ++a) {
                        if (nearest[a] == r || !(squared[a] > 0.0)) continue;
-                       if (std::abs(n.dot(normals[rows[nearest[a]]])) < kMinNormalCosine) {
-                         next[r] = p;  // at a sharp edge: stays
-                         return;
+                       const energy::Point3& m = normals[rows[nearest[a]]];
+                       const double cosine = std::abs(n.dot(m));
+                       if (cosine < kMinNormalCosine) {
+                         if (m.squaredNorm() == 0.0) return;
+                         const energy::Point3 along = n.cross(m).normalized();
+                         if (edge_cosine < 1.0 && std::abs(along.dot(edge)) < kMinNormalCosine) {
+                           return;  // at a corner: stays
+                         }
+                         if (cosine < edge_cosine) {  // the edge of the most different face
+                           edge_cosine = cosine;
+                           edge = along;
+                         }
                        }
                        const double distance = std::sqrt(squared[a]);
                        force += (p - current[nearest[a]]) / distance *
                                 std::exp(-4.0 * squared[a] / (h * h));
                      }
-                     if (n.squaredNorm() == 0.0) {
-                       next[r] = p;
-                       return;
-                     }
                      force -= n * n.dot(force);
+                     if (edge_cosine < 1.0) force = edge * edge.dot(force);
                      next[r] = p + kStep * h * force / std::max(1.0, force.norm());
                    });
     current.swap(next);

@@ -68,33 +68,84 @@ TEST(EvenSpacing, EachPointMovesAtMostFourTenthsOfTheKernelPerRound) {
   }
 }
 
-TEST(EvenSpacing, FixedPointsPointsWithoutANormalAndEdgesStay) {
-  energy::PointList points = RandomSquare(600, 7);
-  energy::PointList normals(points.size(), energy::Point3(0, 0, 1));
+// The unit square in z = 0 (normal z) and a second face at x = 1 perpendicular to it
+// (normal x), `count` random points each.
+void RandomSquareAndWall(int count, energy::PointList* points, energy::PointList* normals) {
+  *points = RandomSquare(count, 7);
+  normals->assign(points->size(), energy::Point3(0, 0, 1));
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < count; ++i) {
+    points->emplace_back(1.0, unit(random), unit(random));
+    normals->emplace_back(1, 0, 0);
+  }
+}
+
+TEST(EvenSpacing, FixedPointsAndPointsWithoutANormalStay) {
+  energy::PointList points, normals;
+  RandomSquareAndWall(600, &points, &normals);
   std::vector<uint8_t> movable(points.size(), 1);
   movable[0] = 0;
   normals[1].setZero();
-  // A second face at x = 1, perpendicular to the square: the points of the square next to
-  // it see a normal 90 degrees off and stay.
-  std::mt19937 random(9);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (int i = 0; i < 600; ++i) {
-    points.emplace_back(1.0, unit(random), unit(random));
-    normals.emplace_back(1, 0, 0);
-    movable.push_back(1);
-  }
   const energy::PointList spread = SpreadEvenly(points, normals, movable, 5, 2);
   EXPECT_EQ(spread[0], points[0]);
   EXPECT_EQ(spread[1], points[1]);
-  int edge_points = 0;
+}
+
+TEST(EvenSpacing, PointsAtASharpEdgeMoveAlongItOnly) {
+  energy::PointList points, normals;
+  RandomSquareAndWall(600, &points, &normals);
+  const std::vector<uint8_t> movable(points.size(), 1);
+  const energy::PointList spread = SpreadEvenly(points, normals, movable, 5, 2);
+  int edge_points = 0, moved = 0;
   for (size_t i = 0; i < 600; ++i) {
-    // Well within one spacing of the other face: one of its 10 nearest is across the edge.
+    // Well within one spacing of the other face: one of its 10 nearest is across the edge,
+    // whose direction is y.
     if (points[i].x() > 0.995) {
       ++edge_points;
-      EXPECT_EQ(spread[i], points[i]) << i;
+      EXPECT_EQ(spread[i].x(), points[i].x()) << i;
+      EXPECT_EQ(spread[i].z(), points[i].z()) << i;
+      if (spread[i].y() != points[i].y()) ++moved;
     }
   }
   EXPECT_GT(edge_points, 0);
+  EXPECT_GT(moved, 0);
+}
+
+TEST(EvenSpacing, PointsAtACornerStay) {
+  energy::PointList points, normals;
+  RandomSquareAndWall(600, &points, &normals);
+  // A third face at y = 0 (normal y): near x = 1, y = 0 the square's points see two edges,
+  // along y and along x, and stay.
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 600; ++i) {
+    points.emplace_back(unit(random), 0.0, unit(random));
+    normals.emplace_back(0, 1, 0);
+  }
+  const std::vector<uint8_t> movable(points.size(), 1);
+  // One round: the neighbours below are those the round sees.
+  const energy::PointList spread = SpreadEvenly(points, normals, movable, 1, 2);
+  // The square's points whose 10 nearest include both other faces (brute force).
+  int corner_points = 0;
+  for (size_t i = 0; i < 600; ++i) {
+    std::vector<std::pair<double, int>> by_distance;
+    for (size_t j = 0; j < points.size(); ++j) {
+      if (j != i) by_distance.emplace_back((points[j] - points[i]).squaredNorm(), j);
+    }
+    std::partial_sort(by_distance.begin(), by_distance.begin() + 10, by_distance.end());
+    bool wall_x = false, wall_y = false;
+    for (int a = 0; a < 10; ++a) {
+      const int j = by_distance[a].second;
+      wall_x = wall_x || (j >= 600 && j < 1200);
+      wall_y = wall_y || j >= 1200;
+    }
+    if (wall_x && wall_y) {
+      ++corner_points;
+      EXPECT_EQ(spread[i], points[i]) << i;
+    }
+  }
+  EXPECT_GT(corner_points, 0);
 }
 
 TEST(EvenSpacing, ZeroRoundsAndThreadCountsChangeNothing) {
