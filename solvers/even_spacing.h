@@ -10,13 +10,13 @@
 // (Jacobi: every move from the positions of the round before):
 //   f_i = sum_{j in the kNeighbors nearest} (p_i - p_j) / |p_i - p_j| exp(-4 |p_i - p_j|^2 / h^2)
 //   p_i += kStep h P_i f_i / max(1, |P_i f_i|),   P_i = I - n_i n_i^T,
-// except at a sharp edge, where a neighbour's normal n_j is more than 30 degrees off n_i:
-// there P_i = e e^T with e along the edge, n_i x n_j for the most different n_j, and a point
-// whose such neighbours give edges more than 30 degrees apart (a corner) stays.
 // with h twice the median distance from a point to its nearest neighbour (the repulsion of
 // WLOP, Huang et al. 2009, without its attraction to the input: the caller carries each moved
 // point along its own fitted surface, FinishDenoising). A point moves at most kStep h per
-// round. In a run on a subsample (subsample_extension.h), the subsample's points are spread,
+// round. At a sharp edge, where a neighbour's normal n_j is more than 30 degrees off n_i,
+// P_i = e e^T instead, e = n_i x n_j / |n_i x n_j| along the edge (n_j the most different
+// normal); a point whose such neighbours give edges more than 30 degrees apart (a corner)
+// stays. In a run on a subsample (subsample_extension.h), the subsample's points are spread,
 // not the points projected onto its surfaces afterwards.
 #ifndef LPD_SOLVERS_EVEN_SPACING_H_
 #define LPD_SOLVERS_EVEN_SPACING_H_
