@@ -57,10 +57,8 @@ constexpr double kMinMergedRegionShare = 0.1;
 // growth stopped there, leaving patches on the mid-surface. Neighbouring regions share most
 // of their points, so chance seeds on one sheet would grow as well: the growth runs only
 // where kMinGrowthSeedShare of the regions are seeds (docs/method.md, "The merged regions
-// grow"). A fifth until the seeds of parts split already were set aside (kSidesSplitRegionShare
-// below), which had brought split plates to 18%; a merged plate 1.4 deviations thick reads
-// 19-39% (kurtosis 2.78, about the seed bar), a screwdriver at 10K 3% and sheets split
-// cleanly at 50K 1% 10-11% (docs/method.md, "Sides split already").
+// grow"). The share lies between merged plates' (19% and up) and that of the clouds where
+// growing hurts (10-11%; docs/method.md, "The growth at 15% of seeds").
 constexpr int kSidesGrowthNeighbors = 6;
 constexpr double kSidesGrowthStandardErrors = 0.5;
 constexpr double kMinGrowthSeedShare = 0.15;
