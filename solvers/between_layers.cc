@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "energy/nearest_neighbors.h"
@@ -25,15 +26,120 @@ void RobustSpread(const std::vector<double>& sorted, int begin, int end, double*
   *deviation = kMedianAbsToSigma * Median(&distances);
 }
 
+// A layer's height along the layers' normal over the plane across it, in the scaled in-plane
+// coordinates (x, y): h = c . (1, x, y, x^2, x y, y^2).
+using HeightField = Eigen::Matrix<double, 6, 1>;
+constexpr double kFieldRefitDeviations = 2.5;
+
+HeightField Monomials(double x, double y) {
+  HeightField monomials;
+  monomials << 1.0, x, y, x * x, x * y, y * y;
+  return monomials;
+}
+
+// The largest principal curvature of a height field, in scaled coordinates.
+double LargestCurvature(const HeightField& field) {
+  Eigen::Matrix2d hessian;
+  hessian << 2.0 * field(3), field(4), field(4), 2.0 * field(5);
+  const Eigen::Vector2d curvatures =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(hessian).eigenvalues();
+  return curvatures.cwiseAbs().maxCoeff();
+}
+
 // Two layers read around a centre: heights along `normal` from `origin`.
 struct Layers {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   energy::Point3 origin = energy::Point3::Zero();
-  double median[2] = {0.0, 0.0};
-  double spread[2] = {0.0, 0.0};  // robust deviations
+  // The plane across `normal`: unit axes, and the in-plane distance that scales them to 1.
+  Eigen::Vector3d axis[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  double scale = 1.0;
+  HeightField height[2] = {HeightField::Zero(), HeightField::Zero()};  // lower, upper run
+  double spread[2] = {0.0, 0.0};  // robust deviations about the heights
   double gap = 0.0;
+  bool curved = false;
   bool found = false;
+
+  // (x, y) of a point in the scaled plane across the normal.
+  Eigen::Vector2d Across(const energy::Point3& point) const {
+    const Eigen::Vector3d step = point - origin;
+    return Eigen::Vector2d(axis[0].dot(step), axis[1].dot(step)) / scale;
+  }
+  double HeightAt(int run, const energy::Point3& point) const {
+    if (!curved) return height[run](0);
+    const Eigen::Vector2d xy = Across(point);
+    return height[run].dot(Monomials(xy.x(), xy.y()));
+  }
 };
+
+// The quadratic height field of the points local[a] of one run (side[a] == run), fitted by
+// least squares and again over the points within kFieldRefitDeviations robust deviations of
+// the first fit (a run holds points left between the layers, too), and the robust deviation
+// of the run's heights about it; false where it is not finite.
+bool FitHeightField(const Layers& layers, const std::vector<energy::Point3>& local,
+                    const std::vector<double>& heights, const std::vector<uint8_t>& side,
+                    int run, HeightField* field, double* deviation) {
+  thread_local std::vector<double> residuals;
+  for (int round = 0; round < 2; ++round) {
+    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+    HeightField right = HeightField::Zero();
+    int used = 0;
+    for (size_t a = 0; a < local.size(); ++a) {
+      if (side[a] != run) continue;
+      const Eigen::Vector2d xy = layers.Across(local[a]);
+      const HeightField monomials = Monomials(xy.x(), xy.y());
+      if (round == 1 &&
+          !(std::abs(heights[a] - field->dot(monomials)) <= kFieldRefitDeviations * *deviation)) {
+        continue;
+      }
+      normal_matrix += monomials * monomials.transpose();
+      right += heights[a] * monomials;
+      ++used;
+    }
+    if (used < HeightField::RowsAtCompileTime) return false;
+    *field = normal_matrix.ldlt().solve(right);
+    if (!field->allFinite()) return false;
+    residuals.clear();
+    for (size_t a = 0; a < local.size(); ++a) {
+      if (side[a] != run) continue;
+      const Eigen::Vector2d xy = layers.Across(local[a]);
+      residuals.push_back(std::abs(heights[a] - field->dot(Monomials(xy.x(), xy.y()))));
+    }
+    *deviation = kMedianAbsToSigma * Median(&residuals);
+  }
+  return true;
+}
+
+// Where the runs bend by more than kMaxFlatLayerBend times their gap, their fitted height
+// fields and the deviations about them replace the medians (between_layers.h).
+void ReadCurvature(const std::vector<energy::Point3>& local, const std::vector<double>& heights,
+                   double threshold, Layers* layers) {
+  layers->axis[0] = layers->normal.unitOrthogonal();
+  layers->axis[1] = layers->normal.cross(layers->axis[0]);
+  double farthest_squared = 0.0;
+  for (const energy::Point3& point : local) {
+    const Eigen::Vector3d step = point - layers->origin;
+    const double height = layers->normal.dot(step);
+    farthest_squared = std::max(farthest_squared, step.squaredNorm() - height * height);
+  }
+  if (!(farthest_squared > 0.0)) return;
+  layers->scale = std::sqrt(farthest_squared);
+  thread_local std::vector<uint8_t> side;
+  side.resize(local.size());
+  for (size_t a = 0; a < local.size(); ++a) side[a] = heights[a] < threshold ? 0 : 1;
+  HeightField field[2];
+  double deviation[2];
+  for (int run = 0; run < 2; ++run) {
+    if (!FitHeightField(*layers, local, heights, side, run, &field[run], &deviation[run])) return;
+  }
+  const double curvature = std::max(LargestCurvature(field[0]), LargestCurvature(field[1])) /
+                           farthest_squared;
+  if (!(curvature * layers->gap > kMaxFlatLayerBend)) return;
+  layers->curved = true;
+  for (int run = 0; run < 2; ++run) {
+    layers->height[run] = field[run];
+    layers->spread[run] = deviation[run];
+  }
+}
 
 // The dominant direction of the normals of the outputs `nearest[0, found)`.
 Eigen::Vector3d LayerNormal(const energy::PointList& normals, const int* nearest, int found) {
@@ -89,8 +195,12 @@ Layers ReadLayers(const energy::PointList& outputs, const std::vector<int>& cand
         kMaxLayerFootprintDifference)) {
     return layers;
   }
-  RobustSpread(sorted, 0, lower_size, &layers.median[0], &layers.spread[0]);
-  RobustSpread(sorted, lower_size, found, &layers.median[1], &layers.spread[1]);
+  double median[2];
+  RobustSpread(sorted, 0, lower_size, &median[0], &layers.spread[0]);
+  RobustSpread(sorted, lower_size, found, &median[1], &layers.spread[1]);
+  layers.height[0](0) = median[0];
+  layers.height[1](0) = median[1];
+  ReadCurvature(local, heights, threshold, &layers);
   layers.found = true;
   return layers;
 }
@@ -99,17 +209,18 @@ Layers ReadLayers(const energy::PointList& outputs, const std::vector<int>& cand
 // to p, where o lies between the two layers; false where it does not.
 bool MoveOntoLayer(const Layers& layers, const energy::Point3& o, const energy::Point3& p,
                    double* move) {
+  const double level[2] = {layers.HeightAt(0, o), layers.HeightAt(1, o)};
+  const double gap = layers.curved ? level[1] - level[0] : layers.gap;
+  if (layers.curved && !(gap > kMinCurvedLayerGapShare * layers.gap)) return false;
   const double height = layers.normal.dot(o - layers.origin);
-  const double off[2] = {layers.median[0] - height, layers.median[1] - height};
+  const double off[2] = {level[0] - height, level[1] - height};
   const int nearer = std::abs(off[0]) < std::abs(off[1]) ? 0 : 1;
   const double margin =
-      std::max(kBetweenLayerSpreads * layers.spread[nearer], kBetweenLayerGapShare * layers.gap);
+      std::max(kBetweenLayerSpreads * layers.spread[nearer], kBetweenLayerGapShare * gap);
   if (!(std::abs(off[nearer]) > margin)) return false;
   const double input_height = layers.normal.dot(p - layers.origin);
-  const int side = std::abs(input_height - layers.median[0]) <
-                           std::abs(input_height - layers.median[1])
-                       ? 0
-                       : 1;
+  const int side =
+      std::abs(input_height - level[0]) < std::abs(input_height - level[1]) ? 0 : 1;
   *move = off[side];
   return true;
 }
@@ -129,54 +240,62 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
   }
   const int count = static_cast<int>(anchors.size());
   if (count < kLayerNeighbors) return result;
-  const double deviation = OffsetDeviation(inputs, outputs, normals, anchors);
-  if (!(deviation > 0.0)) return result;
-  energy::PointList anchor_points(count);
-  for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
   // The layers around every kLayerCentreStride-th anchor.
   const int num_centres = (count + kLayerCentreStride - 1) / kLayerCentreStride;
-  energy::PointList centre_points(num_centres);
-  for (int c = 0; c < num_centres; ++c) centre_points[c] = anchor_points[c * kLayerCentreStride];
-  std::vector<Layers> layers(num_centres);
-  // The normal from each centre's kLayerNeighbors nearest; the layers from the anchors
-  // within sqrt(kLayerReachSquared) times the farthest of them.
+  // Each centre's layer normal from its kLayerNeighbors nearest anchors, and the reach within
+  // which its layers are read, sqrt(kLayerReachSquared) times the farthest of them: read on
+  // the first pass and kept (the normals do not move, and the moves are short).
   std::vector<Eigen::Vector3d> normal(num_centres);
   std::vector<double> reach(num_centres);
-  const energy::NearestNeighbors search(anchor_points);
-  search.ForEach(num_centres, kLayerNeighbors, num_threads,
-                 [&](int c) { return centre_points[c]; },
-                 [&](int c, const int* nearest, const double* squared_distances, int found) {
-                   thread_local std::vector<int> neighbors;
-                   neighbors.resize(found);
-                   for (int b = 0; b < found; ++b) neighbors[b] = anchors[nearest[b]];
-                   normal[c] = LayerNormal(normals, neighbors.data(), found);
-                   reach[c] = kLayerReachSquared * squared_distances[found - 1];
-                 });
-  search.ForEachWithin(num_centres, num_threads, [&](int c) { return centre_points[c]; },
-                       [&](int c) { return reach[c]; },
-                       [&](int c, const std::vector<int>& within) {
-                         thread_local std::vector<int> candidates;
-                         candidates.resize(within.size());
-                         for (size_t b = 0; b < within.size(); ++b) {
-                           candidates[b] = anchors[within[b]];
-                         }
-                         layers[c] = ReadLayers(outputs, candidates, normal[c], centre_points[c],
-                                                deviation);
-                       });
-  // Each anchor against the layers of its nearest centre.
-  std::vector<uint8_t> moves(count, 0);
-  const energy::NearestNeighbors centre_search(centre_points);
-  centre_search.ForEach(count, 1, num_threads, [&](int r) { return anchor_points[r]; },
-                        [&](int r, const int* nearest, const double*, int) {
-                          const Layers& around = layers[nearest[0]];
-                          const int i = anchors[r];
-                          double move = 0.0;
-                          if (around.found && MoveOntoLayer(around, outputs[i], inputs[i], &move)) {
-                            result[i] = outputs[i] + move * around.normal;
-                            moves[r] = 1;
-                          }
-                        });
-  if (moved) *moved = static_cast<int>(std::count(moves.begin(), moves.end(), 1));
+  energy::PointList anchor_points(count), centre_points(num_centres);
+  std::vector<Layers> layers(num_centres);
+  for (int pass = 0; pass < kBetweenLayerPasses; ++pass) {
+    const energy::PointList before = result;  // this pass reads its layers from these
+    const double deviation = OffsetDeviation(inputs, before, normals, anchors);
+    if (!(deviation > 0.0)) break;
+    for (int r = 0; r < count; ++r) anchor_points[r] = before[anchors[r]];
+    for (int c = 0; c < num_centres; ++c) {
+      centre_points[c] = anchor_points[c * kLayerCentreStride];
+    }
+    const energy::NearestNeighbors search(anchor_points);
+    if (pass == 0) {
+      search.ForEach(num_centres, kLayerNeighbors, num_threads,
+                     [&](int c) { return centre_points[c]; },
+                     [&](int c, const int* nearest, const double* squared_distances, int found) {
+                       thread_local std::vector<int> neighbors;
+                       neighbors.resize(found);
+                       for (int b = 0; b < found; ++b) neighbors[b] = anchors[nearest[b]];
+                       normal[c] = LayerNormal(normals, neighbors.data(), found);
+                       reach[c] = kLayerReachSquared * squared_distances[found - 1];
+                     });
+    }
+    search.ForEachWithin(num_centres, num_threads, [&](int c) { return centre_points[c]; },
+                         [&](int c) { return reach[c]; },
+                         [&](int c, const std::vector<int>& within) {
+                           thread_local std::vector<int> candidates;
+                           candidates.resize(within.size());
+                           for (size_t b = 0; b < within.size(); ++b) {
+                             candidates[b] = anchors[within[b]];
+                           }
+                           layers[c] = ReadLayers(before, candidates, normal[c],
+                                                  centre_points[c], deviation);
+                         });
+    // Each anchor against the layers of its nearest centre, all read before any move.
+    const energy::NearestNeighbors centre_search(centre_points);
+    centre_search.ForEach(count, 1, num_threads, [&](int r) { return anchor_points[r]; },
+                          [&](int r, const int* nearest, const double*, int) {
+                            const Layers& around = layers[nearest[0]];
+                            const int i = anchors[r];
+                            double move = 0.0;
+                            if (around.found &&
+                                MoveOntoLayer(around, before[i], inputs[i], &move)) {
+                              result[i] = before[i] + move * around.normal;
+                            }
+                          });
+  }
+  if (moved) {
+    for (size_t i = 0; i < outputs.size(); ++i) *moved += result[i] != outputs[i];
+  }
   return result;
 }
 

@@ -38,6 +38,23 @@
 // and more than kBetweenLayerGapShare of the gap from it. It then moves along c onto the
 // median of the run nearer to its input's height c.(p - o_c).
 //
+// Curved layers. A rod a few noise deviations thick reads as two layers along its dominant
+// normal, its front and back halves, and against their medians its flanks lie between them:
+// moved along c they left the surface (the benchmark's thin_cylinder, radius 2-3 deviations).
+// So each run is also fitted with a quadratic height field over the plane across c (least
+// squares), and where the larger principal curvature of the two fields times the gap exceeds
+// kMaxFlatLayerBend (a rod's halves: curvature 1 / r, gap about 4 r / pi, so 1.3; two flat
+// sheets read 0.02-0.3), the fields stand in for the medians: an output is measured against
+// the runs' heights at its own place across c, the deviations are taken about the fields, and
+// it stays where the fields lie less than kMinCurvedLayerGapShare of the gap apart (a rod's
+// flank, where its halves meet). A point near a rod's axis still moves, onto the field of its
+// input's side. Flat layers keep the medians: six coefficients read noisier than one median,
+// and with the fields everywhere the thicker plate at 10K 3% came out farther (P2M 2.68 ->
+// 2.96; docs/method.md, "Curved layers").
+//
+// The layers are read and their points moved kBetweenLayerPasses times: the moves leave
+// cleaner runs, and more centres pass the separation test the second time.
+//
 // The final step runs it where the probe reads the noise wider than kCalibratedReadRatio
 // spacings (neighborhood_size.h), where the split leaves such points: at 10K points and 2%
 // the 400 nearest span curved parts, and cheburashka came out at P2M 1.12 instead of 1.00.
@@ -63,12 +80,16 @@ constexpr double kMinLayerSeparation = 4.0;
 constexpr double kMaxLayerFootprintDifference = 0.5;
 constexpr double kBetweenLayerSpreads = 1.5;
 constexpr double kBetweenLayerGapShare = 0.2;
+constexpr double kMaxFlatLayerBend = 0.5;
+constexpr double kMinCurvedLayerGapShare = 0.5;
+constexpr int kBetweenLayerPasses = 2;
 
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
 // movable output with a normal that lies between two layers (above) moved onto the layer
 // nearer to its input. The layers are read from the movable outputs with a normal (the
-// anchors), all before any moves. Unchanged where fewer than kLayerNeighbors anchors take part.
-// `moved` (optional): how many points moved. Deterministic for any thread count.
+// anchors), all before any of a pass's moves. Unchanged where fewer than kLayerNeighbors
+// anchors take part. `moved` (optional): how many points moved. Deterministic for any thread
+// count.
 energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inputs,
                                                    const energy::PointList& outputs,
                                                    const energy::PointList& normals,
