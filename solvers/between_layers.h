@@ -42,11 +42,12 @@
 // normal, its front and back halves, and against their medians its flanks lie between them:
 // moved along c they left the surface (the benchmark's thin_cylinder, radius 2-3 deviations).
 // So each run is also fitted with a quadratic height field over the plane across c (least
-// squares, then again over the points near the first fit), and where the larger principal curvature of the two fields times the gap exceeds
-// kMaxFlatLayerBend (a rod's halves: curvature 1 / r, gap about 4 r / pi, so 1.3; two flat
-// sheets read 0.02-0.3), the fields stand in for the medians: an output is measured against
-// the runs' heights at its own place across c, the deviations are taken about the fields, and
-// it stays where the fields lie less than kMinCurvedLayerGapShare of the gap apart (a rod's
+// squares, then again over the points near the first fit), and where the larger principal
+// curvature of the two fields times the gap exceeds kMaxFlatLayerBend (a rod's halves:
+// curvature 1 / r, gap about 4 r / pi, so 1.3; two flat sheets read 0.02-0.3), the fields
+// stand in for the medians: an output is measured against the runs' heights at its own
+// place across c, the deviations are taken about the fields, and it stays where the fields
+// lie less than kMinCurvedLayerGapShare of the gap apart (a rod's
 // flank, where its halves meet). A point near a rod's axis still moves, onto the field of its
 // input's side. Flat layers keep the medians: six coefficients read noisier than one median,
 // and with the fields everywhere the thicker plate at 10K 3% came out farther (P2M 2.68 ->
