@@ -47,11 +47,11 @@
 // curvature 1 / r, gap about 4 r / pi, so 1.3; two flat sheets read 0.02-0.3), the fields
 // stand in for the medians: an output is measured against the runs' heights at its own
 // place across c, the deviations are taken about the fields, and it stays where the fields
-// lie less than kMinCurvedLayerGapShare of the gap apart (a rod's
-// flank, where its halves meet). A point near a rod's axis still moves, onto the field of its
-// input's side. Flat layers keep the medians: six coefficients read noisier than one median,
-// and with the fields everywhere the thicker plate at 10K 3% came out farther (P2M 2.68 ->
-// 2.96; docs/method.md, "Curved layers, and a second pass").
+// lie less than kMinCurvedLayerGapShare of the gap apart (a rod's flank, where its halves
+// meet). A point near a rod's axis still moves, onto the field of its input's side. Flat
+// layers keep the medians: six coefficients read noisier than one median, and with the
+// fields everywhere the thicker plate at 10K 3% came out farther (P2M 2.68 -> 2.96;
+// docs/method.md, "Curved layers, and a second pass").
 //
 // The layers are read and their points moved kBetweenLayerPasses times: the moves leave
 // cleaner runs, and more centres pass the separation test the second time. The later passes
