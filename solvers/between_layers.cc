@@ -71,38 +71,35 @@ struct Layers {
   }
 };
 
-// The quadratic height field of the points local[a] of one run (side[a] == run), fitted by
-// least squares and again over the points within kFieldRefitDeviations robust deviations of
-// the first fit (a run holds points left between the layers, too), and the robust deviation
-// of the run's heights about it; false where it is not finite.
-bool FitHeightField(const Layers& layers, const std::vector<energy::Point3>& local,
-                    const std::vector<double>& heights, const std::vector<uint8_t>& side,
-                    int run, HeightField* field, double* deviation) {
+// The quadratic height field of the points a of one run (side[a] == run), with monomials[a]
+// their monomials across the normal, fitted by least squares and again over the points
+// within kFieldRefitDeviations robust deviations of the first fit (a run holds points left
+// between the layers, too), and the robust deviation of the run's heights about it; false
+// where it is not finite.
+bool FitHeightField(const std::vector<HeightField>& monomials, const std::vector<double>& heights,
+                    const std::vector<uint8_t>& side, int run, HeightField* field,
+                    double* deviation) {
   thread_local std::vector<double> residuals;
   for (int round = 0; round < 2; ++round) {
     Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
     HeightField right = HeightField::Zero();
     int used = 0;
-    for (size_t a = 0; a < local.size(); ++a) {
+    for (size_t a = 0; a < monomials.size(); ++a) {
       if (side[a] != run) continue;
-      const Eigen::Vector2d xy = layers.Across(local[a]);
-      const HeightField monomials = Monomials(xy.x(), xy.y());
-      if (round == 1 &&
-          !(std::abs(heights[a] - field->dot(monomials)) <= kFieldRefitDeviations * *deviation)) {
+      if (round == 1 && !(std::abs(heights[a] - field->dot(monomials[a])) <=
+                          kFieldRefitDeviations * *deviation)) {
         continue;
       }
-      normal_matrix += monomials * monomials.transpose();
-      right += heights[a] * monomials;
+      normal_matrix += monomials[a] * monomials[a].transpose();
+      right += heights[a] * monomials[a];
       ++used;
     }
     if (used < HeightField::RowsAtCompileTime) return false;
     *field = normal_matrix.ldlt().solve(right);
     if (!field->allFinite()) return false;
     residuals.clear();
-    for (size_t a = 0; a < local.size(); ++a) {
-      if (side[a] != run) continue;
-      const Eigen::Vector2d xy = layers.Across(local[a]);
-      residuals.push_back(std::abs(heights[a] - field->dot(Monomials(xy.x(), xy.y()))));
+    for (size_t a = 0; a < monomials.size(); ++a) {
+      if (side[a] == run) residuals.push_back(std::abs(heights[a] - field->dot(monomials[a])));
     }
     *deviation = kMedianAbsToSigma * Median(&residuals);
   }
@@ -111,25 +108,26 @@ bool FitHeightField(const Layers& layers, const std::vector<energy::Point3>& loc
 
 // Where the runs bend by more than kMaxFlatLayerBend times their gap, their fitted height
 // fields and the deviations about them replace the medians (between_layers.h).
+// `farthest_squared`: the largest squared distance across the normal of the points `local`.
 void ReadCurvature(const std::vector<energy::Point3>& local, const std::vector<double>& heights,
-                   double threshold, Layers* layers) {
+                   double threshold, double farthest_squared, Layers* layers) {
+  if (!(farthest_squared > 0.0)) return;
   layers->axis[0] = layers->normal.unitOrthogonal();
   layers->axis[1] = layers->normal.cross(layers->axis[0]);
-  double farthest_squared = 0.0;
-  for (const energy::Point3& point : local) {
-    const Eigen::Vector3d step = point - layers->origin;
-    const double height = layers->normal.dot(step);
-    farthest_squared = std::max(farthest_squared, step.squaredNorm() - height * height);
-  }
-  if (!(farthest_squared > 0.0)) return;
   layers->scale = std::sqrt(farthest_squared);
   thread_local std::vector<uint8_t> side;
+  thread_local std::vector<HeightField> monomials;
   side.resize(local.size());
-  for (size_t a = 0; a < local.size(); ++a) side[a] = heights[a] < threshold ? 0 : 1;
+  monomials.resize(local.size());
+  for (size_t a = 0; a < local.size(); ++a) {
+    side[a] = heights[a] < threshold ? 0 : 1;
+    const Eigen::Vector2d xy = layers->Across(local[a]);
+    monomials[a] = Monomials(xy.x(), xy.y());
+  }
   HeightField field[2];
   double deviation[2];
   for (int run = 0; run < 2; ++run) {
-    if (!FitHeightField(*layers, local, heights, side, run, &field[run], &deviation[run])) return;
+    if (!FitHeightField(monomials, heights, side, run, &field[run], &deviation[run])) return;
   }
   const double curvature = std::max(LargestCurvature(field[0]), LargestCurvature(field[1])) /
                            farthest_squared;
@@ -200,7 +198,7 @@ Layers ReadLayers(const energy::PointList& outputs, const std::vector<int>& cand
   RobustSpread(sorted, lower_size, found, &median[1], &layers.spread[1]);
   layers.height[0](0) = median[0];
   layers.height[1](0) = median[1];
-  ReadCurvature(local, heights, threshold, &layers);
+  ReadCurvature(local, heights, threshold, across[found - 1].first, &layers);
   layers.found = true;
   return layers;
 }
