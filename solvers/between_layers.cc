@@ -11,6 +11,7 @@
 #include "energy/sheet_split.h"
 #include "solvers/median.h"
 #include "solvers/merged_sides.h"
+#include "solvers/two_layer_mixture.h"
 
 namespace lpd::solvers {
 namespace {
@@ -55,6 +56,9 @@ struct Layers {
   double scale = 1.0;
   HeightField height[2] = {HeightField::Zero(), HeightField::Zero()};  // lower, upper run
   double spread[2] = {0.0, 0.0};  // robust deviations about the heights
+  // How far each run's outputs move to the inputs' layer (flat layers; 0 where the mixture
+  // does not read as two layers of noise).
+  double correction[2] = {0.0, 0.0};
   double gap = 0.0;
   bool curved = false;
   bool found = false;
@@ -65,9 +69,14 @@ struct Layers {
     return Eigen::Vector2d(axis[0].dot(step), axis[1].dot(step)) / scale;
   }
   double HeightAt(int run, const energy::Point3& point) const {
-    if (!curved) return height[run](0);
+    if (!curved) return height[run](0) + correction[run];
     const Eigen::Vector2d xy = Across(point);
     return height[run].dot(Monomials(xy.x(), xy.y()));
+  }
+  // The correction of the run an output o lies nearer to.
+  double Correction(const energy::Point3& o) const {
+    const double h = normal.dot(o - origin);
+    return correction[std::abs(h - height[0](0)) < std::abs(h - height[1](0)) ? 0 : 1];
   }
 };
 
@@ -139,6 +148,32 @@ void ReadCurvature(const std::vector<energy::Point3>& local, const std::vector<d
   }
 }
 
+// The moves of flat layers' outputs onto the heights of their inputs' layers
+// (between_layers.h): the two-layer mixture fitted to the inputs of the outputs `local`
+// (`heights`: theirs along the normal), where it reads as two layers of noise, each mean's
+// move d from its run's median shrunk to d^3 / (d^2 + (kMixtureMoveStandardErrors se)^2).
+void CorrectLayerHeights(const energy::PointList& inputs, const std::vector<int>& local,
+                         double deviation, Layers* layers) {
+  thread_local std::vector<double> input_heights;
+  input_heights.resize(local.size());
+  for (size_t b = 0; b < local.size(); ++b) {
+    input_heights[b] = layers->normal.dot(inputs[local[b]] - layers->origin);
+  }
+  const double median[2] = {layers->height[0](0), layers->height[1](0)};
+  TwoLayerMixture fit;
+  if (!FitTwoLayerMixture(input_heights, median[0], median[1], deviation, &fit)) return;
+  if (!(fit.mean[1] - fit.mean[0] > kMinMixtureSeparation * fit.deviation &&
+        fit.deviation < kMaxMixtureDeviationRatio * deviation)) {
+    return;
+  }
+  for (int run = 0; run < 2; ++run) {
+    const double move = fit.mean[run] - median[run];
+    const double uncertainty =
+        kMixtureMoveStandardErrors * kMixtureMoveStandardErrors * fit.mean_variance[run];
+    layers->correction[run] = move * move * move / (move * move + uncertainty);
+  }
+}
+
 // The dominant direction of the normals of the outputs `nearest[0, found)`.
 Eigen::Vector3d LayerNormal(const energy::PointList& normals, const int* nearest, int found) {
   Eigen::Matrix3d normal_moment = Eigen::Matrix3d::Zero();
@@ -151,9 +186,9 @@ Eigen::Vector3d LayerNormal(const energy::PointList& normals, const int* nearest
 
 // The layers along `normal` around `origin` of the kLayerNeighbors outputs nearest across it
 // among `candidates` (between_layers.h).
-Layers ReadLayers(const energy::PointList& outputs, const std::vector<int>& candidates,
-                  const Eigen::Vector3d& normal, const energy::Point3& origin,
-                  double deviation) {
+Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outputs,
+                  const std::vector<int>& candidates, const Eigen::Vector3d& normal,
+                  const energy::Point3& origin, double deviation) {
   Layers layers;
   layers.origin = origin;
   layers.normal = normal;
@@ -168,11 +203,14 @@ Layers ReadLayers(const energy::PointList& outputs, const std::vector<int>& cand
   const int found = std::min(static_cast<int>(across.size()), kLayerNeighbors);
   std::partial_sort(across.begin(), across.begin() + found, across.end());
   thread_local std::vector<energy::Point3> local;
+  thread_local std::vector<int> indices;
   thread_local std::vector<double> heights, sorted;
   local.resize(found);
+  indices.resize(found);
   heights.resize(found);
   for (int b = 0; b < found; ++b) {
-    local[b] = outputs[across[b].second];
+    indices[b] = across[b].second;
+    local[b] = outputs[indices[b]];
     heights[b] = normal.dot(local[b] - origin);
   }
   sorted = heights;
@@ -199,6 +237,7 @@ Layers ReadLayers(const energy::PointList& outputs, const std::vector<int>& cand
   layers.height[0](0) = median[0];
   layers.height[1](0) = median[1];
   ReadCurvature(local, heights, threshold, across[found - 1].first, &layers);
+  if (!layers.curved) CorrectLayerHeights(inputs, indices, deviation, &layers);
   layers.found = true;
   return layers;
 }
@@ -229,7 +268,8 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                                                    const energy::PointList& outputs,
                                                    const energy::PointList& normals,
                                                    const std::vector<uint8_t>& movable,
-                                                   int num_threads, int* moved) {
+                                                   bool move_between, int num_threads,
+                                                   int* moved) {
   if (moved) *moved = 0;
   energy::PointList result = outputs;
   std::vector<int> anchors;
@@ -275,7 +315,7 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                            for (size_t b = 0; b < within.size(); ++b) {
                              candidates[b] = anchors[within[b]];
                            }
-                           layers[c] = ReadLayers(before, candidates, normal[c],
+                           layers[c] = ReadLayers(inputs, before, candidates, normal[c],
                                                   centre_points[c], deviation);
                          });
     // Each anchor against the layers of its nearest centre, all read before any move.
@@ -284,11 +324,13 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                           [&](int r, const int* nearest, const double*, int) {
                             const Layers& around = layers[nearest[0]];
                             const int i = anchors[r];
+                            if (!around.found) return;
                             double move = 0.0;
-                            if (around.found &&
-                                MoveOntoLayer(around, before[i], inputs[i], &move)) {
-                              result[i] = before[i] + move * around.normal;
+                            if (!(move_between &&
+                                  MoveOntoLayer(around, before[i], inputs[i], &move))) {
+                              move = around.Correction(before[i]);
                             }
+                            result[i] = before[i] + move * around.normal;
                           });
   }
   if (moved) {

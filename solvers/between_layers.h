@@ -53,13 +53,40 @@
 // fields everywhere the thicker plate at 10K 3% came out farther (P2M 2.68 -> 2.96;
 // docs/method.md, "Curved layers, and a second pass").
 //
+// The layers' heights from the inputs. Where the graph splits the sides only in places (sheets
+// 2.8 noise deviations apart at 10K points and 2%: a quarter of the probe's regions), the
+// solve pulls the two output layers toward each other: there their medians lay 0.09-0.16
+// noise deviations inside the sheets, and their 10th percentiles 0.4 deviations inside. The
+// inputs of the outputs read around a centre are fitted with two Gaussian layers of one
+// deviation (two_layer_mixture.h), from the runs' medians, and each flat run's outputs move
+// by the mixture's mean less the run's median, d, shrunk to d^3 / (d^2 + (2 se)^2) by the
+// mean's standard error se (kMixtureMoveStandardErrors): where the layers are already right,
+// the fit's own noise would otherwise move them, and the scores' variance reads low where the
+// layers overlap (with d^3 / (d^2 + se^2), sheets 1.9 deviations apart at 50K and 3% came out
+// at P2M 0.707 against 0.692). Only where the mixture reads as two layers of noise:
+//   - its means at least kMinMixtureSeparation of its deviations apart: nearer, a mixture's
+//     means are poorly determined;
+//   - its deviation under kMaxMixtureDeviationRatio times the inputs' offsets' deviation: two
+//     layers of noise read 0.99-1.13 times it (sheets and plates, 10K 2-3%, 5th to 95th
+//     percentile of the centres), the layers the test finds on meshes read wider (1.2-1.5 on
+//     cheburashka at 2%, 1.6-1.8 on JOINT).
+// All the inputs take part: leaving out those whose outputs lie off the runs (a plate's
+// wall at its rim) cut the noise's tails, as the outputs keep part of their inputs' offsets,
+// and moved a plate's layers out by 0.07 deviations at 50K points and 2%. Curved layers keep
+// their fields.
+//
 // The layers are read and their points moved kBetweenLayerPasses times: the moves leave
 // cleaner runs, and more centres pass the separation test the second time. The later passes
 // keep the first's layer normals and reaches.
 //
-// The final step runs it where the probe reads the noise wider than kCalibratedReadRatio
-// spacings (neighborhood_size.h), where the split leaves such points: at 10K points and 2%
-// the 400 nearest span curved parts, and cheburashka came out at P2M 1.12 instead of 1.00.
+// The final step moves points between the layers only where the probe reads the noise wider
+// than kCalibratedReadRatio spacings (neighborhood_size.h), where the split leaves such
+// points: at 10K points and 2%, moved, cheburashka and the thicker plate came out at P2M 1.03
+// and 1.58 instead of 0.83 and 1.39. It reads the layers and corrects their heights there and
+// where kThinShareForNoWidening or more of the probe's regions split, the cloud's evidence of
+// thin parts (the benchmark's sheets and plates at 10K 2% read 0.26-0.77 and JOINT 0.33,
+// cheburashka 0.076 and the meshes at 50K 1% under 0.01), which spares the others the
+// search.
 #ifndef LPD_SOLVERS_BETWEEN_LAYERS_H_
 #define LPD_SOLVERS_BETWEEN_LAYERS_H_
 
@@ -85,10 +112,14 @@ constexpr double kBetweenLayerGapShare = 0.2;
 constexpr double kMaxFlatLayerBend = 0.5;
 constexpr double kMinCurvedLayerGapShare = 0.5;
 constexpr int kBetweenLayerPasses = 2;
+constexpr double kMinMixtureSeparation = 2.5;
+constexpr double kMaxMixtureDeviationRatio = 1.15;
+constexpr double kMixtureMoveStandardErrors = 2.0;
 
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
-// movable output with a normal that lies between two layers (above) moved onto the layer
-// nearer to its input. The layers are read from the movable outputs with a normal (the
+// movable output with a normal on two flat layers moved to its inputs' layer, and with
+// `move_between`, each that lies between two layers (above) moved onto the layer nearer to
+// its input. The layers are read from the movable outputs with a normal (the
 // anchors), all before any of a pass's moves. Unchanged where fewer than kLayerNeighbors
 // anchors take part. `moved` (optional): how many points moved. Deterministic for any thread
 // count.
@@ -96,7 +127,8 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                                                    const energy::PointList& outputs,
                                                    const energy::PointList& normals,
                                                    const std::vector<uint8_t>& movable,
-                                                   int num_threads, int* moved = nullptr);
+                                                   bool move_between, int num_threads,
+                                                   int* moved = nullptr);
 
 }  // namespace lpd::solvers
 

@@ -94,11 +94,11 @@ struct SidesInput {
   energy::PointList* outputs;
 };
 
-// SeparateMergedSides over all `sets` at once, then (with `between_layers`)
-// MoveBetweenLayerPointsOntoLayers in each, the flagged outliers standing; returns how many
-// points moved.
+// SeparateMergedSides over all `sets` at once, then, with `read_layers`,
+// MoveBetweenLayerPointsOntoLayers in each (points between the layers moved with
+// `move_between`), the flagged outliers standing; returns how many points moved.
 int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& sets,
-                  bool between_layers, int num_threads) {
+                  bool read_layers, bool move_between, int num_threads) {
   std::vector<energy::PointList> normalized(sets.size());
   std::vector<std::vector<uint8_t>> movable(sets.size());
   std::vector<SidesPart> parts;
@@ -118,10 +118,10 @@ int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& set
   for (size_t s = 0; s < sets.size(); ++s) {
     int between = 0;
     const energy::PointList layered =
-        between_layers ? MoveBetweenLayerPointsOntoLayers(sets[s].inputs, separated[s],
-                                                          sets[s].normals, movable[s],
-                                                          num_threads, &between)
-                       : separated[s];
+        read_layers ? MoveBetweenLayerPointsOntoLayers(sets[s].inputs, separated[s],
+                                                       sets[s].normals, movable[s], move_between,
+                                                       num_threads, &between)
+                    : separated[s];
     moved += between;
     for (size_t i = 0; i < layered.size(); ++i) {
       if (layered[i] != normalized[s][i]) (*sets[s].outputs)[i] = frame.ToInput(layered[i]);
@@ -337,10 +337,13 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   // a subsample run's extension, with one count of merged regions. A resumed run keeps no
   // estimates and skips it, as it skips the feedback.
   if (options.final_step.separate_merged_sides && estimates.noise_sigma > 0.0) {
-    // Points left between two sides, where the probe reads the noise wider than the spacing
-    // (between_layers.h).
-    const bool between_layers = estimates.spacing > 0.0 &&
-                                estimates.read_sigma > kCalibratedReadRatio * estimates.spacing;
+    // The points left between two output layers, where the probe reads the noise wider than
+    // the spacing, and the layers' heights from their inputs, there and where the probe's
+    // regions split as often as on thin parts (between_layers.h).
+    const bool move_between = estimates.spacing > 0.0 &&
+                              estimates.read_sigma > kCalibratedReadRatio * estimates.spacing;
+    const bool read_layers =
+        move_between || estimates.two_sheet_fraction >= kThinShareForNoWidening;
     std::vector<SidesInput> sets = {
         {problem.points, result.normals, result.indicators.is_outlier, &result.projected}};
     energy::PointList extended_inputs(state.left_out_points.size());  // normalized frame
@@ -351,7 +354,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       sets.push_back({extended_inputs, extended_normals, extended.is_outlier, &extended_points});
     }
     result.num_separated =
-        SeparateSides(problem.frame, sets, between_layers, options.settings.num_threads);
+        SeparateSides(problem.frame, sets, read_layers, move_between,
+                      options.settings.num_threads);
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,

@@ -2,8 +2,10 @@
 // three noise deviations apart move onto a layer, most onto their own, also where the layers
 // are as far apart as the neighbourhood reaches; points on a layer, one
 // flat sheet with the residual of a denoised output, and a curved cap sampled far finer than
-// its curvature do not move; points between two bent layers move onto one; the result does
-// not depend on the thread count.
+// its curvature do not move; points between two bent layers move onto one; two layers the
+// solve pulled toward each other move back out to their inputs' layers, right ones barely
+// move; without move_between the points between stay; the result does not depend on the
+// thread count.
 #include "solvers/between_layers.h"
 
 #include <cmath>
@@ -50,23 +52,31 @@ TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenTwoLayersMoveOntoALayerMostl
   const Layered m = TwoLayers(1.5 * sigma, sigma, 5);
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   int moved = 0;
-  const energy::PointList result =
-      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 2, &moved);
-  EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 1),
+  const energy::PointList result = MoveBetweenLayerPointsOntoLayers(
+      m.inputs, m.outputs, m.normals, movable, true, 2, &moved);
+  EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, true, 1),
             result);
-  int between = 0, on_a_layer = 0, on_own = 0;
+  // The layers' heights are corrected from the inputs, by the mixture's noise where the
+  // outputs' layers are right (up to 0.45 sigma over one patch of this draw, 0.05 sigma on
+  // average): a point counts as on a layer within 0.5 sigma of it.
+  int between = 0, on_a_layer = 0, on_own = 0, on_layer = 0;
+  double on_layer_move = 0.0;
   for (size_t i = 0; i < result.size(); ++i) {
     EXPECT_EQ(result[i].x(), m.outputs[i].x());
     EXPECT_EQ(result[i].y(), m.outputs[i].y());
     if (!m.between[i]) {
-      EXPECT_EQ(result[i], m.outputs[i]) << "a point on its layer moved: " << i;
+      const double move = std::abs(result[i].z() - m.outputs[i].z());
+      EXPECT_LT(move, 0.5 * sigma) << "a point on its layer moved off it: " << i;
+      on_layer_move += move;
+      ++on_layer;
       continue;
     }
     ++between;
-    on_a_layer += std::abs(std::abs(result[i].z()) - 1.5 * sigma) < 1e-9;
-    on_own += std::abs(result[i].z() - m.side[i]) < 1e-9;
+    on_a_layer += std::abs(std::abs(result[i].z()) - 1.5 * sigma) < 0.5 * sigma;
+    on_own += std::abs(result[i].z() - m.side[i]) < 0.5 * sigma;
   }
-  EXPECT_EQ(moved, on_a_layer);
+  EXPECT_LT(on_layer_move / on_layer, 0.08 * sigma);
+  EXPECT_GE(moved, on_a_layer);
   // Some in-between points lie within a fifth of the gap of a layer and stay (the middle 60%
   // of the gap: 2 / 3 of them lie farther).
   EXPECT_GT(on_a_layer, 0.6 * between);
@@ -84,12 +94,12 @@ TEST(MoveBetweenLayerPointsOntoLayers, LayersAsFarApartAsTheNeighbourhoodReaches
   const Layered m = TwoLayers(half_gap, sigma, 7);
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   const energy::PointList result =
-      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 2);
+      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, true, 2);
   int between = 0, on_a_layer = 0;
   for (size_t i = 0; i < result.size(); ++i) {
     if (!m.between[i]) continue;
     ++between;
-    on_a_layer += std::abs(std::abs(result[i].z()) - half_gap) < 1e-9;
+    on_a_layer += std::abs(std::abs(result[i].z()) - half_gap) < 0.5 * sigma;
   }
   EXPECT_GT(on_a_layer, 0.9 * between);
 }
@@ -118,8 +128,9 @@ TEST(MoveBetweenLayerPointsOntoLayers, OneSheetDoesNotMove) {
     }
     const std::vector<uint8_t> movable(outputs.size(), 1);
     int moved = -1;
-    EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, 2, &moved),
-              outputs)
+    EXPECT_EQ(
+        MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, true, 2, &moved),
+        outputs)
         << (curved ? "curved cap" : "flat sheet");
     EXPECT_EQ(moved, 0);
   }
@@ -127,9 +138,11 @@ TEST(MoveBetweenLayerPointsOntoLayers, OneSheetDoesNotMove) {
 
 // Two bent layers z = kappa x^2 / 2 and that plus g (kappa g = 1.5, over the bar of 0.5), on
 // grids 0.002 apart, g three noise deviations, every fifth output between them (uniform over
-// the middle 60% of the gap) and the inputs on their own layer plus noise. The points on the
-// layers stay, and most of those between land within a twentieth of the gap of a layer (the
-// fitted fields follow the layers' bend; against the runs' medians 46% do).
+// the middle 60% of the gap) and the inputs on their own layer plus noise. Most of those
+// between land within a twentieth of the gap of a layer (the
+// fitted fields follow the layers' bend; against the runs' medians 46% do). The points on the
+// layers barely move (0.016 sigma on average, 0.31 at most, where a centre reads its layers
+// flat and corrects their heights).
 TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenBentLayersMoveOntoALayer) {
   const double gap = 0.025, kappa = 1.5 / gap, spacing = 0.002, sigma = gap / 3.0;
   std::mt19937_64 random(11);
@@ -154,24 +167,29 @@ TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenBentLayersMoveOntoALayer) {
   const std::vector<uint8_t> movable(outputs.size(), 1);
   int moved = 0;
   const energy::PointList result =
-      MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, 2, &moved);
+      MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, true, 2, &moved);
   // The vertical distance to the nearer layer, over the points away from the grid's rim.
   const auto off_layers = [&](const energy::Point3& o) {
     return std::min(std::abs(o.z() - layer(o.x(), 0.0)), std::abs(o.z() - layer(o.x(), gap)));
   };
-  int inner_between = 0, on_a_layer = 0, layer_points_moved = 0;
+  int inner_between = 0, on_a_layer = 0, layer_points = 0;
+  double layer_points_move = 0.0, largest_move = 0.0;
   for (size_t i = 0; i < result.size(); ++i) {
     if (std::abs(outputs[i].x()) > 0.04 || outputs[i].y() < 0.02 || outputs[i].y() > 0.1) {
       continue;
     }
     if (!between[i]) {
-      layer_points_moved += result[i] != outputs[i];
+      const double move = (result[i] - outputs[i]).norm();
+      layer_points_move += move;
+      largest_move = std::max(largest_move, move);
+      ++layer_points;
       continue;
     }
     ++inner_between;
     on_a_layer += off_layers(result[i]) < 0.05 * gap;
   }
-  EXPECT_EQ(layer_points_moved, 0);
+  EXPECT_LT(layer_points_move / layer_points, 0.05 * sigma);
+  EXPECT_LT(largest_move, 0.5 * sigma);
   EXPECT_GT(on_a_layer, 0.55 * inner_between) << on_a_layer << " of " << inner_between;
 }
 
@@ -204,7 +222,7 @@ TEST(MoveBetweenLayerPointsOntoLayers, ARodsFlanksStayAndPointsNearItsAxisMoveOu
   }
   const std::vector<uint8_t> movable(outputs.size(), 1);
   const energy::PointList result =
-      MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, 2);
+      MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, true, 2);
   // How far the outputs lie from the surface, away from the rod's ends.
   double surface_after = 0.0, axis_before = 0.0, axis_after = 0.0;
   int on_surface = 0, inside = 0;
@@ -226,13 +244,61 @@ TEST(MoveBetweenLayerPointsOntoLayers, ARodsFlanksStayAndPointsNearItsAxisMoveOu
   EXPECT_LT(axis_after, 0.5 * axis_before) << "the points near the axis did not move out";
 }
 
+// Two layers 2.8 noise deviations apart whose outputs the solve pulled 0.15 deviations toward
+// each other (each output keeping a third of its noise): the mixture fitted to the inputs
+// moves them back out, with or without the points between moved. Where the outputs' layers
+// are right, they barely move.
+TEST(MoveBetweenLayerPointsOntoLayers, LayersPulledTogetherMoveBackOut) {
+  const double sigma = 0.01, half_gap = 1.4 * sigma;
+  for (const double pulled : {0.15 * sigma, 0.0}) {
+    for (const bool move_between : {false, true}) {
+      Layered m = TwoLayers(half_gap, sigma, 13);
+      std::mt19937_64 random(17);
+      std::normal_distribution<double> residual(0.0, sigma / 3.0);
+      for (size_t i = 0; i < m.outputs.size(); ++i) {
+        const double side = m.side[i] > 0.0 ? 1.0 : -1.0;
+        m.outputs[i].z() = side * (half_gap - pulled) + residual(random);
+      }
+      const std::vector<uint8_t> movable(m.outputs.size(), 1);
+      const energy::PointList result = MoveBetweenLayerPointsOntoLayers(
+          m.inputs, m.outputs, m.normals, movable, move_between, 2);
+      // The mean height over each output's own side, away from the grid's rim.
+      double outward = 0.0;
+      int count = 0;
+      for (size_t i = 0; i < result.size(); ++i) {
+        if (std::min(m.outputs[i].x(), m.outputs[i].y()) < 0.1 ||
+            std::max(m.outputs[i].x(), m.outputs[i].y()) > 0.5) {
+          continue;
+        }
+        outward += (m.side[i] > 0.0 ? 1.0 : -1.0) * result[i].z();
+        ++count;
+      }
+      // Shrunk by the mixture's standard error, the moves take back 70% of the pull.
+      EXPECT_NEAR(outward / count, half_gap, pulled > 0.0 ? 0.5 * pulled : 0.03 * sigma)
+          << "pulled in by " << pulled / sigma << " sigma, move_between " << move_between;
+    }
+  }
+}
+
+// Without move_between, the points between two layers stay between them.
+TEST(MoveBetweenLayerPointsOntoLayers, WithoutMoveBetweenThePointsBetweenStay) {
+  const double sigma = 0.01;
+  const Layered m = TwoLayers(1.5 * sigma, sigma, 5);
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  const energy::PointList result =
+      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, false, 2);
+  for (size_t i = 0; i < result.size(); ++i) {
+    EXPECT_LT(std::abs(result[i].z() - m.outputs[i].z()), 0.5 * sigma) << i;
+  }
+}
+
 TEST(MoveBetweenLayerPointsOntoLayers, FewerPointsThanANeighbourhoodStay) {
   Layered m = TwoLayers(0.015, 0.01, 3);
   m.inputs.resize(kLayerNeighbors - 1);
   m.outputs.resize(kLayerNeighbors - 1);
   m.normals.resize(kLayerNeighbors - 1);
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
-  EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, 2),
+  EXPECT_EQ(MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, true, 2),
             m.outputs);
 }
 
