@@ -188,8 +188,11 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                    }
                    const size_t used =
                        std::min(candidates.size(), static_cast<size_t>(kSidesReferenceNeighbors));
-                   std::partial_sort(candidates.begin(), candidates.begin() + used,
-                                     candidates.end());
+                   if (used > 0) {  // the nearest, in order, for the same sum
+                     std::nth_element(candidates.begin(), candidates.begin() + used - 1,
+                                      candidates.end());
+                     std::sort(candidates.begin(), candidates.begin() + used);
+                   }
                    double sum = 0.0;
                    for (size_t b = 0; b < used; ++b) sum += candidates[b].second;
                    if (used > 0) reference[i] = outputs[i] + (sum / used) * n;
