@@ -335,6 +335,7 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                             }
                             result[i] = before[i] + move * around.normal;
                           });
+    if (result == before) break;  // the next pass would read the same layers
   }
   if (moved) {
     for (size_t i = 0; i < outputs.size(); ++i) *moved += result[i] != outputs[i];
