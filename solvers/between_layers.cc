@@ -149,15 +149,17 @@ void ReadCurvature(const std::vector<energy::Point3>& local, const std::vector<d
 }
 
 // The moves of flat layers' outputs onto the heights of their inputs' layers
-// (between_layers.h): the two-layer mixture fitted to the inputs of the outputs `local`
-// (`heights`: theirs along the normal), where it reads as two layers of noise, each mean's
-// move d from its run's median shrunk to d^3 / (d^2 + (kMixtureMoveStandardErrors se)^2).
-void CorrectLayerHeights(const energy::PointList& inputs, const std::vector<int>& local,
+// (between_layers.h): the two-layer mixture fitted to the inputs of the outputs
+// `across[0, found)` (distance across the normal, output index), where it reads as two layers
+// of noise, each mean's move d from its run's median shrunk to
+// d^3 / (d^2 + (kMixtureMoveStandardErrors se)^2).
+void CorrectLayerHeights(const energy::PointList& inputs,
+                         const std::vector<std::pair<double, int>>& across, int found,
                          double deviation, Layers* layers) {
   thread_local std::vector<double> input_heights;
-  input_heights.resize(local.size());
-  for (size_t b = 0; b < local.size(); ++b) {
-    input_heights[b] = layers->normal.dot(inputs[local[b]] - layers->origin);
+  input_heights.resize(found);
+  for (int b = 0; b < found; ++b) {
+    input_heights[b] = layers->normal.dot(inputs[across[b].second] - layers->origin);
   }
   const double median[2] = {layers->height[0](0), layers->height[1](0)};
   TwoLayerMixture fit;
@@ -206,14 +208,11 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   std::nth_element(across.begin(), across.begin() + found - 1, across.end());
   std::sort(across.begin(), across.begin() + found);
   thread_local std::vector<energy::Point3> local;
-  thread_local std::vector<int> indices;
   thread_local std::vector<double> heights, sorted;
   local.resize(found);
-  indices.resize(found);
   heights.resize(found);
   for (int b = 0; b < found; ++b) {
-    indices[b] = across[b].second;
-    local[b] = outputs[indices[b]];
+    local[b] = outputs[across[b].second];
     heights[b] = normal.dot(local[b] - origin);
   }
   sorted = heights;
@@ -240,7 +239,7 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   layers.height[0](0) = median[0];
   layers.height[1](0) = median[1];
   ReadCurvature(local, heights, threshold, across[found - 1].first, &layers);
-  if (!layers.curved) CorrectLayerHeights(inputs, indices, deviation, &layers);
+  if (!layers.curved) CorrectLayerHeights(inputs, across, found, deviation, &layers);
   layers.found = true;
   return layers;
 }
