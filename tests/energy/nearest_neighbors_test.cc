@@ -40,6 +40,54 @@ TEST(NearestNeighbors, FindsTheKNearestByBruteForce) {
                  });
 }
 
+// From kRadiusFirstMinK on, a query starts from a radius guessed from the last query's: queries
+// in spatial order, far queries that miss the guess, and duplicate points (equal distances,
+// ordered by index) give the brute-force result for one and two threads.
+TEST(NearestNeighbors, FindsTheKNearestFromAGuessedRadiusByBruteForce) {
+  PointList points = RandomPoints(3000, 5);
+  for (int i = 0; i < 200; ++i) points.push_back(points[7 * i]);  // duplicates
+  PointList queries = points;
+  std::sort(queries.begin(), queries.end(),
+            [](const Point3& a, const Point3& b) { return a.x() < b.x(); });
+  queries.resize(400);
+  for (int q = 0; q < 400; q += 40) queries[q] += Point3(5.0 + q, 0.0, 0.0);  // far away
+  const NearestNeighbors search(points);
+  for (int k : {NearestNeighbors::kRadiusFirstMinK, 250}) {
+    for (int threads : {1, 2}) {
+      int checked = 0;
+      search.ForEach(
+          static_cast<int>(queries.size()), k, threads, [&](int q) { return queries[q]; },
+          [&](int q, const int* nearest, const double* squared, int found) {
+            std::vector<std::pair<double, int>> all;
+            for (size_t i = 0; i < points.size(); ++i) {
+              all.emplace_back((points[i] - queries[q]).squaredNorm(), static_cast<int>(i));
+            }
+            std::sort(all.begin(), all.end());
+            ASSERT_EQ(found, k);
+            for (int b = 0; b < k; ++b) {
+              ASSERT_EQ(nearest[b], all[b].second) << "k " << k << " query " << q << " b " << b;
+              ASSERT_EQ(squared[b], all[b].first);
+            }
+#pragma omp atomic
+            ++checked;
+          });
+      EXPECT_EQ(checked, static_cast<int>(queries.size()));
+    }
+  }
+}
+
+TEST(NearestNeighbors, FindsAllPointsWhenFewerThanKFromAGuessedRadius) {
+  const PointList points = RandomPoints(150, 6);
+  const NearestNeighbors search(points);
+  const int k = 200;
+  search.ForEach(20, k, 1, [&](int q) { return points[q]; },
+                 [&](int q, const int* nearest, const double* squared, int found) {
+                   ASSERT_EQ(found, 150);
+                   EXPECT_EQ(nearest[0], q);
+                   for (int b = 1; b < found; ++b) EXPECT_LE(squared[b - 1], squared[b]);
+                 });
+}
+
 TEST(NearestNeighbors, FindsThePointsWithinARadiusByBruteForceForAnyThreadCount) {
   const PointList points = RandomPoints(2000, 3);
   const PointList queries = RandomPoints(50, 4);
