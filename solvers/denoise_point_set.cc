@@ -341,7 +341,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     // the spacing, and the layers' heights from their inputs, there and where the probe's
     // regions split as often as on thin parts (between_layers.h).
     const bool move_between = estimates.spacing > 0.0 &&
-                              estimates.read_sigma > kCalibratedReadRatio * estimates.spacing;
+                              estimates.read_sigma > kMoveBetweenReadRatio * estimates.spacing;
     const bool read_layers =
         move_between || estimates.two_sheet_fraction >= kThinShareForNoWidening;
     std::vector<SidesInput> sets = {
