@@ -18,8 +18,8 @@ class NearestNeighbors {
  public:
   // From this k on, a query first gathers the points within a radius guessed from the last
   // query's k-th distance and selects the k nearest of them: nanoflann's sorted insertion
-  // costs O(k) a candidate, the selection O(1) (docs/performance.md: 1.1x faster at k = 131,
-  // 2x at k = 400, slower under k = 64).
+  // costs O(k) a candidate, the selection O(1) (docs/performance.md: 1.05x faster at k =
+  // 131, 1.4x at 261, 1.9x at 400; slower at k = 64 and under).
   static constexpr int kRadiusFirstMinK = 96;
 
   // Builds a k-d tree over `points`, which must outlive this object.
