@@ -20,6 +20,17 @@ PointList RandomPoints(int count, uint64_t seed) {
   return points;
 }
 
+// Brute force: (squared distance to `query`, index) of every point, nearest first, equal
+// distances by index.
+std::vector<std::pair<double, int>> ByDistance(const PointList& points, const Point3& query) {
+  std::vector<std::pair<double, int>> all;
+  for (size_t i = 0; i < points.size(); ++i) {
+    all.emplace_back((points[i] - query).squaredNorm(), static_cast<int>(i));
+  }
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
 TEST(NearestNeighbors, FindsTheKNearestByBruteForce) {
   const PointList points = RandomPoints(2000, 1);
   const PointList queries = RandomPoints(50, 2);
@@ -27,11 +38,7 @@ TEST(NearestNeighbors, FindsTheKNearestByBruteForce) {
   constexpr int kK = 40;
   search.ForEach(static_cast<int>(queries.size()), kK, 2, [&](int q) { return queries[q]; },
                  [&](int q, const int* nearest, const double* squared, int found) {
-                   std::vector<std::pair<double, int>> all;
-                   for (size_t i = 0; i < points.size(); ++i) {
-                     all.emplace_back((points[i] - queries[q]).squaredNorm(), static_cast<int>(i));
-                   }
-                   std::sort(all.begin(), all.end());
+                   const auto all = ByDistance(points, queries[q]);
                    ASSERT_EQ(found, kK);
                    for (int b = 0; b < kK; ++b) {
                      EXPECT_EQ(nearest[b], all[b].second);
@@ -58,11 +65,7 @@ TEST(NearestNeighbors, FindsTheKNearestFromAGuessedRadiusByBruteForce) {
       search.ForEach(
           static_cast<int>(queries.size()), k, threads, [&](int q) { return queries[q]; },
           [&](int q, const int* nearest, const double* squared, int found) {
-            std::vector<std::pair<double, int>> all;
-            for (size_t i = 0; i < points.size(); ++i) {
-              all.emplace_back((points[i] - queries[q]).squaredNorm(), static_cast<int>(i));
-            }
-            std::sort(all.begin(), all.end());
+            const auto all = ByDistance(points, queries[q]);
             ASSERT_EQ(found, k);
             for (int b = 0; b < k; ++b) {
               ASSERT_EQ(nearest[b], all[b].second) << "k " << k << " query " << q << " b " << b;
