@@ -11,6 +11,7 @@
 
 #include "energy/point3.h"
 #include "energy/point_kd_tree.h"
+#include "energy/smallest_first.h"
 
 namespace lpd::energy {
 
@@ -108,8 +109,7 @@ class NearestNeighbors {
       auto closer = [](const std::pair<int, double>& a, const std::pair<int, double>& b) {
         return a.second < b.second || (a.second == b.second && a.first < b.first);
       };
-      std::nth_element(matches_.begin(), matches_.begin() + (found - 1), matches_.end(), closer);
-      std::sort(matches_.begin(), matches_.begin() + found, closer);
+      PlaceSmallestFirst(&matches_, found, closer);
       for (int a = 0; a < found; ++a) {
         nearest[a] = matches_[a].first;
         squared_distances[a] = matches_[a].second;

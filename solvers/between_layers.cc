@@ -9,6 +9,7 @@
 
 #include "energy/nearest_neighbors.h"
 #include "energy/sheet_split.h"
+#include "energy/smallest_first.h"
 #include "solvers/median.h"
 #include "solvers/merged_sides.h"
 #include "solvers/two_layer_mixture.h"
@@ -204,9 +205,7 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   }
   const int found = std::min(static_cast<int>(across.size()), kLayerNeighbors);
   if (found == 0) return layers;
-  // The `found` nearest, in order (selection then a sort: faster than a partial sort's heap).
-  std::nth_element(across.begin(), across.begin() + found - 1, across.end());
-  std::sort(across.begin(), across.begin() + found);
+  energy::PlaceSmallestFirst(&across, found);  // the `found` nearest, in order
   thread_local std::vector<energy::Point3> local;
   thread_local std::vector<double> heights, sorted;
   local.resize(found);

@@ -6,6 +6,7 @@
 
 #include "energy/nearest_neighbors.h"
 #include "energy/sheet_split.h"
+#include "energy/smallest_first.h"
 #include "solvers/median.h"
 
 namespace lpd::solvers {
@@ -188,11 +189,8 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                    }
                    const size_t used =
                        std::min(candidates.size(), static_cast<size_t>(kSidesReferenceNeighbors));
-                   if (used > 0) {  // the nearest, in order, for the same sum
-                     std::nth_element(candidates.begin(), candidates.begin() + used - 1,
-                                      candidates.end());
-                     std::sort(candidates.begin(), candidates.begin() + used);
-                   }
+                   // the nearest, in order, for the same sum
+                   energy::PlaceSmallestFirst(&candidates, used);
                    double sum = 0.0;
                    for (size_t b = 0; b < used; ++b) sum += candidates[b].second;
                    if (used > 0) reference[i] = outputs[i] + (sum / used) * n;
