@@ -10,7 +10,8 @@ namespace lpd::solvers {
 energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
                                       const energy::PointList& outputs,
                                       const energy::PointList& normals,
-                                      const std::vector<uint8_t>& movable, int num_threads) {
+                                      const std::vector<uint8_t>& movable, int num_threads,
+                                      size_t max_kept_neighbor_bytes) {
   std::vector<int> rows;  // the points that take part
   for (size_t i = 0; i < outputs.size(); ++i) {
     if (movable[i] && normals[i].squaredNorm() > 0.0) rows.push_back(static_cast<int>(i));
@@ -28,10 +29,20 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
   const double min_cosine = std::cos(kFeedbackMaxAngleDegrees * M_PI / 180.0);
   const int neighbors = std::min(kFeedbackNeighbors, count);
   const energy::NearestNeighbors search(points);
+  // Each point's neighbours, kept for the second pass where they fit, searched again where
+  // they do not (docs/performance.md, "The feedback's neighbours kept").
+  const size_t kept_size = static_cast<size_t>(count) * neighbors;
+  const bool keep = kept_size * sizeof(int) <= max_kept_neighbor_bytes;
+  std::vector<int> kept(keep ? kept_size : 0);
+  std::vector<int> kept_found(keep ? count : 0);
   // The mean offset m and its squared standard error v of each point; v < 0: no estimate.
   std::vector<double> mean(count, 0.0), squared_error(count, -1.0);
   search.ForEach(count, neighbors, num_threads, [&points](int r) { return points[r]; },
                  [&](int r, const int* nearest, const double*, int found) {
+                   if (keep) {
+                     std::copy_n(nearest, found, kept.data() + static_cast<size_t>(r) * neighbors);
+                     kept_found[r] = found;
+                   }
                    const energy::Point3& n = normals[rows[r]];
                    double sum = 0.0, sum_of_squares = 0.0;
                    int used = 0;
@@ -53,23 +64,29 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
   // point, and its mean over the same neighbours is the prior variance tau^2 of the bias.
   // The posterior mean of a bias b ~ N(0, tau^2) seen as m ~ N(b, v) is m tau^2 / (tau^2 + v)
   // (empirical Bayes; docs/method.md, "The mean offset fed back").
-  // The same neighbours are searched again rather than kept: keeping them would take
-  // 120 ints per point, ten times the k-NN graph itself at k = 12.
   std::vector<double> shift(count, 0.0);
-  search.ForEach(count, neighbors, num_threads, [&points](int r) { return points[r]; },
-                 [&](int r, const int* nearest, const double*, int found) {
-                   if (squared_error[r] < 0.0) return;
-                   double sum = 0.0;
-                   int used = 0;
-                   for (int a = 0; a < found; ++a) {
-                     const int j = nearest[a];
-                     if (squared_error[j] < 0.0) continue;
-                     sum += std::max(0.0, mean[j] * mean[j] - squared_error[j]);
-                     ++used;
-                   }
-                   const double prior = sum / used;
-                   if (prior > 0.0) shift[r] = mean[r] * prior / (prior + squared_error[r]);
-                 });
+  auto shrink = [&](int r, const int* nearest, const double*, int found) {
+    if (squared_error[r] < 0.0) return;
+    double sum = 0.0;
+    int used = 0;
+    for (int a = 0; a < found; ++a) {
+      const int j = nearest[a];
+      if (squared_error[j] < 0.0) continue;
+      sum += std::max(0.0, mean[j] * mean[j] - squared_error[j]);
+      ++used;
+    }
+    const double prior = sum / used;
+    if (prior > 0.0) shift[r] = mean[r] * prior / (prior + squared_error[r]);
+  };
+  if (keep) {
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+    for (int r = 0; r < count; ++r) {
+      shrink(r, kept.data() + static_cast<size_t>(r) * neighbors, nullptr, kept_found[r]);
+    }
+  } else {
+    search.ForEach(count, neighbors, num_threads, [&points](int r) { return points[r]; },
+                   shrink);
+  }
   for (int r = 0; r < count; ++r) {
     const int i = rows[r];
     result[i] = outputs[i] + shift[r] * normals[i];

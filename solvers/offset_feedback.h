@@ -22,6 +22,7 @@
 #ifndef LPD_SOLVERS_OFFSET_FEEDBACK_H_
 #define LPD_SOLVERS_OFFSET_FEEDBACK_H_
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -31,14 +32,20 @@ namespace lpd::solvers {
 
 constexpr int kFeedbackNeighbors = 120;
 constexpr double kFeedbackMaxAngleDegrees = 20.0;
+// The default cap on the kept neighbour lists (120 ints a point: 64 MiB holds 139,810
+// points), which spare the second pass its search.
+constexpr size_t kMaxKeptNeighborBytes = size_t{64} << 20;
 
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) after the
 // feedback above. Only points with movable[i] and a nonzero normal take part (outliers are
-// left out). Deterministic for any thread count.
+// left out). The first pass's neighbour lists are kept for the second where they take at
+// most `max_kept_neighbor_bytes`, and searched again otherwise; the same result either way,
+// and for any thread count.
 energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
                                       const energy::PointList& outputs,
                                       const energy::PointList& normals,
-                                      const std::vector<uint8_t>& movable, int num_threads);
+                                      const std::vector<uint8_t>& movable, int num_threads,
+                                      size_t max_kept_neighbor_bytes = kMaxKeptNeighborBytes);
 
 // In a run on a subsample (subsample_extension.h), the feedback the solved points took
 // (`fed_back` - `solved`, along `solved_normals`) carried to the other points `outputs` (with

@@ -1,7 +1,8 @@
 // FeedBackMeanOffsets against closed forms: a constant offset is fed back whole whatever the
 // normals' signs, each face of an edge takes its own offset, zero-mean offsets move the
 // points by a fraction of their mean's standard error, and a noisy constant offset is fed
-// back shrunk by the Wiener factor b^2 / (b^2 + v). CarryFeedback gives points off the
+// back shrunk by the Wiener factor b^2 / (b^2 + v), with the neighbour lists kept or searched
+// again. CarryFeedback gives points off the
 // solved ones their nearest solved point's shift. DenoisePointSet with it on a cone, whole and
 // on a subsample.
 #include "solvers/offset_feedback.h"
@@ -139,9 +140,12 @@ TEST(FeedBackMeanOffsets, ShrinksANoisyOffsetByTheEmpiricalBayesFactor) {
     m[i] = sum / 120.0;
     v[i] = (sum_of_squares - 120.0 * m[i] * m[i]) / 119.0 / 120.0;
   }
-  for (int threads : {1, 2}) {
-    const energy::PointList fed =
-        FeedBackMeanOffsets(inputs, plane.outputs, plane.normals, movable, threads);
+  // threads x (neighbour lists kept for the second pass, or searched again: no bytes)
+  for (const auto& [threads, kept_bytes] :
+       {std::pair<int, size_t>{1, kMaxKeptNeighborBytes}, {2, kMaxKeptNeighborBytes}, {1, 0},
+        {2, 0}}) {
+    const energy::PointList fed = FeedBackMeanOffsets(inputs, plane.outputs, plane.normals,
+                                                      movable, threads, kept_bytes);
     double fraction = 0.0;
     for (int i = 0; i < n; ++i) {
       double tau2 = 0.0;
