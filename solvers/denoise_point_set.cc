@@ -12,6 +12,7 @@
 #include "solvers/duplicate_points.h"
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
+#include "solvers/height_smoothing.h"
 #include "solvers/between_layers.h"
 #include "solvers/merged_sides.h"
 #include "solvers/near_repeats.h"
@@ -356,6 +357,18 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     result.num_separated =
         SeparateSides(problem.frame, sets, read_layers, move_between,
                       options.settings.num_threads);
+  }
+  // The heights smoothed (height_smoothing.h), within two noise deviations; a resumed run
+  // keeps no noise estimate and skips it.
+  if (options.final_step.height_smoothing_pairs > 0 && estimates.read_sigma > 0.0) {
+    normalize_output();
+    const energy::PointList smoothed =
+        SmoothHeights(normalized, result.normals, movable,
+                      kHeightBandDeviations * estimates.read_sigma,
+                      options.final_step.height_smoothing_pairs, options.settings.num_threads);
+    for (size_t i = 0; i < normalized.size(); ++i) {
+      if (smoothed[i] != normalized[i]) result.projected[i] = problem.frame.ToInput(smoothed[i]);
+    }
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,

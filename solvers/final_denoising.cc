@@ -33,6 +33,8 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
     out << "local_noise_ratio must be in [1, 100], got " << local_noise_ratio;
   } else if (even_spacing_rounds < 0 || even_spacing_rounds > 1000) {
     out << "even_spacing must be in [0, 1000], got " << even_spacing_rounds;
+  } else if (height_smoothing_pairs < 0 || height_smoothing_pairs > 1000) {
+    out << "height_smoothing must be in [0, 1000], got " << height_smoothing_pairs;
   } else if (blended_surfaces < 1) {
     out << "blended_surfaces must be at least 1, got " << blended_surfaces;
   } else if (!InUnitInterval(feature_line_threshold)) {

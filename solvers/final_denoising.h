@@ -66,6 +66,9 @@ struct FinalDenoisingOptions {
   // Move each output point of a region whose input offsets read as two merged sides to the
   // side its offset's sign picks (merged_sides.h; paper: off).
   bool separate_merged_sides = true;
+  // Pairs of rounds (lambda, mu) smoothing the output's heights along its normals over its
+  // nearest outputs, after the steps above (height_smoothing.h; 0: off; paper: off).
+  int height_smoothing_pairs = 2;
   double outlier_fraction = 0.65;        // outlier score that makes an outlier, in (0, 1]
   // Largest factor by which a plane's region noise may widen its line process (above; 1:
   // the global mu_l only, as in the paper).
