@@ -42,8 +42,8 @@ DEFINE_string(resume, "",
               "the saved parameters unless flags are given (not k or initialization), "
               "--max_iters more iterations; with the saved thread count the result is the "
               "same bit for bit as one uninterrupted run; no second outlier pass or "
-              "isolation test (they need the input) and no offset feedback (it needs the "
-              "noise estimate); also --resume=FILE");
+              "isolation test (they need the input), and no offset feedback, thin-part "
+              "steps or height smoothing (they need the noise estimate); also --resume=FILE");
 DEFINE_string(summary_json, "",
               "also write what the run did to this JSON file: the parameters given and in "
               "effect, k, noise and spacing, the weights used, every pass, counts, times and "

@@ -416,10 +416,10 @@ std::vector<Parameter> FinalStepParameters() {
               [](O& o) -> int& { return o.final_step.even_spacing_rounds; }),
       Integer("height_smoothing", kBoth,
               {kFinal,
-               "pairs of rounds that move each output point along its normal by the mean "
-               "height of its 8 nearest outputs within 20 degrees and two noise deviations of "
-               "it, times 0.63 then -0.67 (Taubin's smoothing: the point-to-point jitter of the "
-               "fitted surfaces goes, the curved shape stays; 0: off)",
+               "pairs of rounds that move each output point along its normal by the median "
+               "height of itself and its 8 nearest outputs within 20 degrees and two noise "
+               "deviations of it, times 0.63 then -0.67 (Taubin's smoothing: the point-to-point "
+               "jitter of the fitted surfaces goes, the curved shape stays; 0: off)",
                "", "0"},
               [](O& o) -> int& { return o.final_step.height_smoothing_pairs; }),
       Flag("offset_feedback", kBoth,

@@ -41,13 +41,25 @@ energy::PointList SmoothHeights(const energy::PointList& outputs,
   energy::PointList next(count);
   for (int round = 0; round < 2 * pairs; ++round) {
     const double factor = round % 2 == 0 ? kTaubinLambda : kTaubinMu;
-#pragma omp parallel for schedule(static) num_threads(num_threads)
-    for (int r = 0; r < count; ++r) {
-      const energy::Point3& n = normals[rows[r]];
-      const int* kept = neighbors.data() + static_cast<size_t>(r) * searched;
-      double sum = 0.0;
-      for (int a = 0; a < used[r]; ++a) sum += n.dot(current[kept[a]] - current[r]);
-      next[r] = used[r] > 0 ? current[r] + (factor * sum / used[r]) * n : current[r];
+#pragma omp parallel num_threads(num_threads)
+    {
+      std::vector<double> heights(searched);
+#pragma omp for schedule(static)
+      for (int r = 0; r < count; ++r) {
+        const energy::Point3& n = normals[rows[r]];
+        const int* kept = neighbors.data() + static_cast<size_t>(r) * searched;
+        const int size = used[r];
+        if (size == 0) {
+          next[r] = current[r];
+          continue;
+        }
+        for (int a = 0; a < size; ++a) heights[a] = n.dot(current[kept[a]] - current[r]);
+        std::sort(heights.begin(), heights.begin() + size);
+        const double median = size % 2 == 1
+                                  ? heights[size / 2]
+                                  : 0.5 * (heights[size / 2 - 1] + heights[size / 2]);
+        next[r] = current[r] + (factor * median) * n;
+      }
     }
     current.swap(next);
   }
