@@ -12,6 +12,7 @@
 #include "energy/smallest_first.h"
 #include "solvers/median.h"
 #include "solvers/merged_sides.h"
+#include "solvers/movable_rows.h"
 #include "solvers/two_layer_mixture.h"
 
 namespace lpd::solvers {
@@ -273,10 +274,7 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                                                    int* moved) {
   if (moved) *moved = 0;
   energy::PointList result = outputs;
-  std::vector<int> anchors;
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    if (movable[i] && normals[i].squaredNorm() > 0.0) anchors.push_back(static_cast<int>(i));
-  }
+  const std::vector<int> anchors = MovableRowsWithNormal(movable, normals);
   const int count = static_cast<int>(anchors.size());
   if (count < kLayerNeighbors) return result;
   // The layers around every kLayerCentreStride-th anchor.

@@ -8,6 +8,7 @@
 #include "energy/sheet_split.h"
 #include "energy/smallest_first.h"
 #include "solvers/median.h"
+#include "solvers/movable_rows.h"
 
 namespace lpd::solvers {
 
@@ -213,12 +214,8 @@ struct MeasuredPart {
 MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
   MeasuredPart measured;
   std::vector<int>& anchors = measured.anchors;
+  anchors = MovableRowsWithNormal(part.movable, part.normals);
   const energy::PointList& outputs = part.outputs;
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    if (part.movable[i] && part.normals[i].squaredNorm() > 0.0) {
-      anchors.push_back(static_cast<int>(i));
-    }
-  }
   const int n = static_cast<int>(outputs.size());
   if (static_cast<int>(anchors.size()) < kSidesRegionPoints) return measured;
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "energy/nearest_neighbors.h"
+#include "solvers/movable_rows.h"
 
 namespace lpd::solvers {
 
@@ -12,10 +13,7 @@ energy::PointList FeedBackMeanOffsets(const energy::PointList& inputs,
                                       const energy::PointList& normals,
                                       const std::vector<uint8_t>& movable, int num_threads,
                                       size_t max_kept_neighbor_bytes) {
-  std::vector<int> rows;  // the points that take part
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    if (movable[i] && normals[i].squaredNorm() > 0.0) rows.push_back(static_cast<int>(i));
-  }
+  const std::vector<int> rows = MovableRowsWithNormal(movable, normals);  // those that take part
   energy::PointList result = outputs;
   const int count = static_cast<int>(rows.size());
   if (count < 2) return result;
