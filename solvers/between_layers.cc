@@ -62,8 +62,18 @@ struct Layers {
   // does not read as two layers of noise).
   double correction[2] = {0.0, 0.0};
   double gap = 0.0;
+  // The in-plane distance of the read outputs' centroid from the centre, over the farthest
+  // of them across the normal: near 0 inside two layers, 0.42 where a straight rim crosses
+  // the centre.
+  double asymmetry = 0.0;
   bool curved = false;
   bool found = false;
+
+  // Two layers no noise draw spans, read over a balanced footprint (between_layers.h).
+  bool ClearlyApart(double deviation) const {
+    return found && gap >= kClearLayerGapDeviations * deviation &&
+           asymmetry < kMaxClearLayerAsymmetry;
+  }
 
   // (x, y) of a point in the scaled plane across the normal.
   Eigen::Vector2d Across(const energy::Point3& point) const {
@@ -211,10 +221,13 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   thread_local std::vector<double> heights, sorted;
   local.resize(found);
   heights.resize(found);
+  Eigen::Vector3d in_plane_sum = Eigen::Vector3d::Zero();
   for (int b = 0; b < found; ++b) {
     local[b] = outputs[across[b].second];
     heights[b] = normal.dot(local[b] - origin);
+    in_plane_sum += (local[b] - origin) - heights[b] * normal;
   }
+  layers.asymmetry = in_plane_sum.norm() / found / std::sqrt(across[found - 1].first);
   sorted = heights;
   std::sort(sorted.begin(), sorted.end());
   const int min_run = std::max(1, static_cast<int>(std::ceil(kMinLayerShare * found)));
@@ -317,6 +330,11 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                            layers[c] = ReadLayers(inputs, before, candidates, normal[c],
                                                   centre_points[c], deviation);
                          });
+    // Below the read ratio, the points between layers clearly apart, where enough centres
+    // read such layers (between_layers.h).
+    const int clear_centres = static_cast<int>(std::count_if(
+        layers.begin(), layers.end(), [&](const Layers& l) { return l.ClearlyApart(deviation); }));
+    const bool move_clear = clear_centres >= kMinClearLayerShare * num_centres;
     // Each anchor against the layers of its nearest centre, all read before any move.
     const energy::NearestNeighbors centre_search(centre_points);
     centre_search.ForEach(count, 1, num_threads, [&](int r) { return anchor_points[r]; },
@@ -325,8 +343,9 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                             const int i = anchors[r];
                             if (!around.found) return;
                             double move = 0.0;
-                            if (!(move_between &&
-                                  MoveOntoLayer(around, before[i], inputs[i], &move))) {
+                            const bool may_move =
+                                move_between || (move_clear && around.ClearlyApart(deviation));
+                            if (!(may_move && MoveOntoLayer(around, before[i], inputs[i], &move))) {
                               move = around.Correction(before[i]);
                             }
                             result[i] = before[i] + move * around.normal;

@@ -90,6 +90,18 @@
 // more of the probe's regions split, the cloud's evidence of thin parts (the benchmark's
 // sheets and plates at 10K 2% read 0.26-0.77 and JOINT 0.33, cheburashka 0.076 and the
 // meshes at 50K 1% under 0.01), which spares the others the search.
+//
+// Layers clearly apart. Below that ratio the points between two layers still move where the
+// runs lie kClearLayerGapDeviations deviations apart or more: no noise draw spans such a gap,
+// and the outputs between are the noise's tails that the solve left off their side (sheets
+// 5.6 noise deviations apart at 50K points and 1%, read at 0.85 spacings: 2.8% of the points,
+// two thirds of the squared error). A thin part's rim is surface between its layers, so two
+// guards keep it where it is. The centre's footprint must be balanced: the centroid of the
+// kLayerNeighbors outputs read lies within kMaxClearLayerAsymmetry of their farthest distance
+// across from the centre (a straight rim through the centre: 0.42). And kMinClearLayerShare
+// of the centres must read such layers: the sheets and plates read 0.89-0.90 and JOINT 0.25,
+// but cheburashka at 10K 1.5% reads 0.07-0.08, at its ears, whose rims lie inside one
+// footprint (moved there, its P2M went 0.54 -> 0.60; docs/method.md, "Layers clearly apart").
 #ifndef LPD_SOLVERS_BETWEEN_LAYERS_H_
 #define LPD_SOLVERS_BETWEEN_LAYERS_H_
 
@@ -119,11 +131,14 @@ constexpr int kBetweenLayerPasses = 2;
 constexpr double kMinMixtureSeparation = 2.5;
 constexpr double kMaxMixtureDeviationRatio = 1.15;
 constexpr double kMixtureMoveStandardErrors = 2.0;
+constexpr double kClearLayerGapDeviations = 4.0;
+constexpr double kMaxClearLayerAsymmetry = 0.2;
+constexpr double kMinClearLayerShare = 0.15;
 
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
-// movable output with a normal on two flat layers moved to its inputs' layer, and with
-// `move_between`, each that lies between two layers (above) moved onto the layer nearer to
-// its input. The layers are read from the movable outputs with a normal (the
+// movable output with a normal on two flat layers moved to its inputs' layer, and each that
+// lies between two layers (above) moved onto the layer nearer to its input: with
+// `move_between` everywhere, without it where the layers lie clearly apart. The layers are read from the movable outputs with a normal (the
 // anchors), all before any of a pass's moves. Unchanged where fewer than kLayerNeighbors
 // anchors take part. `moved` (optional): how many points moved. Deterministic for any thread
 // count.

@@ -4,8 +4,9 @@
 // flat sheet with the residual of a denoised output, and a curved cap sampled far finer than
 // its curvature do not move; points between two bent layers move onto one; two layers the
 // solve pulled toward each other move back out to their inputs' layers, right ones barely
-// move; without move_between the points between stay; the result does not depend on the
-// thread count.
+// move; without move_between the points between stay, unless the layers lie clearly apart
+// (not at a plate's rim wall, nor where few centres read such layers); the result does not
+// depend on the thread count.
 #include "solvers/between_layers.h"
 
 #include <cmath>
@@ -290,6 +291,101 @@ TEST(MoveBetweenLayerPointsOntoLayers, WithoutMoveBetweenThePointsBetweenStay) {
   for (size_t i = 0; i < result.size(); ++i) {
     EXPECT_LT(std::abs(result[i].z() - m.outputs[i].z()), 0.5 * sigma) << i;
   }
+}
+
+// Layers six noise deviations apart (over four of the inputs' offsets' deviations, which
+// the points between widen): without move_between, the points between move onto a layer
+// all the same, onto their own, except near the grid's rim, where the centres' footprints
+// are one-sided.
+TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenLayersClearlyApartMoveWithoutMoveBetween) {
+  const double sigma = 0.01, half_gap = 3.0 * sigma;
+  const Layered m = TwoLayers(half_gap, sigma, 23);
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  const energy::PointList result =
+      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, false, 2);
+  int between = 0, on_own = 0;
+  for (size_t i = 0; i < result.size(); ++i) {
+    const energy::Point3& o = m.outputs[i];
+    if (!m.between[i] || std::min(o.x(), o.y()) < 0.1 || std::max(o.x(), o.y()) > 0.5) continue;
+    ++between;
+    on_own += std::abs(result[i].z() - m.side[i]) < 0.5 * sigma;
+  }
+  ASSERT_GT(between, 300);
+  // Inside, only those already within a fifth of the gap of a layer may stay (none of the
+  // middle 60%); an input picks the wrong side with probability Phi(-3) = 0.1%.
+  EXPECT_GT(on_own, 0.97 * between);
+}
+
+// A plate's two layers six noise deviations apart with a wall at its rim x = 0.6: the wall's
+// outputs lie between the layers, on the surface, and stay (without the footprint's balance
+// test, 2.3 sigma moves); the points between the layers away from the rim still move.
+TEST(MoveBetweenLayerPointsOntoLayers, APlatesRimWallStays) {
+  const double sigma = 0.01, half_gap = 3.0 * sigma;
+  Layered m = TwoLayers(half_gap, sigma, 29);
+  std::mt19937_64 random(31);
+  std::normal_distribution<double> noise(0.0, sigma);
+  const size_t layer_points = m.outputs.size();
+  for (int b = 0; b < 120; ++b) {
+    for (int level = 1; level < 6; ++level) {
+      const energy::Point3 wall(0.6, 0.005 * b, half_gap * (level / 3.0 - 1.0));
+      m.outputs.push_back(wall);
+      m.inputs.push_back(wall + energy::Point3(noise(random), 0.0, 0.0));
+      m.normals.emplace_back(1.0, 0.0, 0.0);
+    }
+  }
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  const energy::PointList result =
+      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, false, 2);
+  // Onto a layer a wall point would move a sigma or more; the layers' height corrections
+  // (from the inputs' mixture, as on any flat layers) move them 0.74 sigma at most here.
+  for (size_t i = layer_points; i < result.size(); ++i) {
+    EXPECT_LT(std::abs(result[i].z() - m.outputs[i].z()), 0.9 * sigma) << "wall point " << i;
+  }
+  int between = 0, on_own = 0;
+  for (size_t i = 0; i < layer_points; ++i) {
+    if (!m.between[i] || std::min(m.outputs[i].x(), m.outputs[i].y()) < 0.1 ||
+        std::max(m.outputs[i].x(), m.outputs[i].y()) > 0.45) {
+      continue;
+    }
+    ++between;
+    on_own += std::abs(result[i].z() - m.side[i]) < 0.5 * sigma;
+  }
+  EXPECT_GT(on_own, 0.97 * between);
+}
+
+// One flat layer of 120 x 120 points with a second layer six noise deviations above it over
+// a corner of 20 x 20 (an ear): too few centres read layers clearly apart, so without
+// move_between the points between the two there stay.
+TEST(MoveBetweenLayerPointsOntoLayers, AFewLayersClearlyApartMoveNothing) {
+  const double sigma = 0.01, gap = 6.0 * sigma;
+  std::mt19937_64 random(37);
+  std::normal_distribution<double> noise(0.0, sigma);
+  energy::PointList inputs, outputs, normals;
+  std::vector<uint8_t> between;
+  for (int a = 0; a < 120; ++a) {
+    for (int b = 0; b < 120; ++b) {
+      const bool ear = a < 20 && b < 20;
+      for (const double height : {0.0, gap}) {
+        if (height > 0.0 && !ear) continue;
+        const bool stuck = ear && (a * 20 + b) % 5 == 0;
+        const double x = 0.01 * a + (height > 0.0 ? 0.005 : 0.0), y = 0.01 * b;
+        inputs.emplace_back(x, y, height + noise(random));
+        outputs.emplace_back(x, y, stuck ? 0.5 * gap : height);
+        normals.emplace_back(0.0, 0.0, 1.0);
+        between.push_back(stuck);
+      }
+    }
+  }
+  const std::vector<uint8_t> movable(outputs.size(), 1);
+  const energy::PointList result =
+      MoveBetweenLayerPointsOntoLayers(inputs, outputs, normals, movable, false, 2);
+  int stuck = 0;
+  for (size_t i = 0; i < result.size(); ++i) {
+    if (!between[i]) continue;
+    ++stuck;
+    EXPECT_LT(std::abs(result[i].z() - outputs[i].z()), 0.5 * sigma) << i;
+  }
+  EXPECT_GT(stuck, 100);
 }
 
 TEST(MoveBetweenLayerPointsOntoLayers, FewerPointsThanANeighbourhoodStay) {
