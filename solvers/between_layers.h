@@ -138,10 +138,10 @@ constexpr double kMinClearLayerShare = 0.15;
 // `outputs` (the projections of `inputs`, same order, with unit or zero `normals`) with each
 // movable output with a normal on two flat layers moved to its inputs' layer, and each that
 // lies between two layers (above) moved onto the layer nearer to its input: with
-// `move_between` everywhere, without it where the layers lie clearly apart. The layers are read from the movable outputs with a normal (the
-// anchors), all before any of a pass's moves. Unchanged where fewer than kLayerNeighbors
-// anchors take part. `moved` (optional): how many points moved. Deterministic for any thread
-// count.
+// `move_between` everywhere, without it where the layers lie clearly apart. The layers are
+// read from the movable outputs with a normal (the anchors), all before any of a pass's
+// moves. Unchanged where fewer than kLayerNeighbors anchors take part. `moved` (optional):
+// how many points moved. Deterministic for any thread count.
 energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inputs,
                                                    const energy::PointList& outputs,
                                                    const energy::PointList& normals,
