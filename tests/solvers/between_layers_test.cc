@@ -48,6 +48,25 @@ Layered TwoLayers(double half_gap, double sigma, uint64_t seed) {
   return m;
 }
 
+// Of the TwoLayers points between (the first of m's points; any added after them are not),
+// those whose output lies inside the grid, x and y in [0.1, far], and how many of them the
+// result puts within half a sigma of their own layer.
+struct InnerBetween {
+  int between = 0, on_own = 0;
+};
+
+InnerBetween CountInnerBetween(const Layered& m, const energy::PointList& result, double far,
+                               double sigma) {
+  InnerBetween inner;
+  for (size_t i = 0; i < m.between.size(); ++i) {
+    const energy::Point3& o = m.outputs[i];
+    if (!m.between[i] || std::min(o.x(), o.y()) < 0.1 || std::max(o.x(), o.y()) > far) continue;
+    ++inner.between;
+    inner.on_own += std::abs(result[i].z() - m.side[i]) < 0.5 * sigma;
+  }
+  return inner;
+}
+
 TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenTwoLayersMoveOntoALayerMostlyTheirOwn) {
   const double sigma = 0.01;
   const Layered m = TwoLayers(1.5 * sigma, sigma, 5);
@@ -303,17 +322,11 @@ TEST(MoveBetweenLayerPointsOntoLayers, PointsBetweenLayersClearlyApartMoveWithou
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   const energy::PointList result =
       MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, false, 2);
-  int between = 0, on_own = 0;
-  for (size_t i = 0; i < result.size(); ++i) {
-    const energy::Point3& o = m.outputs[i];
-    if (!m.between[i] || std::min(o.x(), o.y()) < 0.1 || std::max(o.x(), o.y()) > 0.5) continue;
-    ++between;
-    on_own += std::abs(result[i].z() - m.side[i]) < 0.5 * sigma;
-  }
-  ASSERT_GT(between, 300);
+  const InnerBetween inner = CountInnerBetween(m, result, 0.5, sigma);
+  ASSERT_GT(inner.between, 300);
   // Inside, only those already within a fifth of the gap of a layer may stay (none of the
   // middle 60%); an input picks the wrong side with probability Phi(-3) = 0.1%.
-  EXPECT_GT(on_own, 0.97 * between);
+  EXPECT_GT(inner.on_own, 0.97 * inner.between);
 }
 
 // A plate's two layers six noise deviations apart with a wall at its rim x = 0.6: the wall's
@@ -341,16 +354,8 @@ TEST(MoveBetweenLayerPointsOntoLayers, APlatesRimWallStays) {
   for (size_t i = layer_points; i < result.size(); ++i) {
     EXPECT_LT(std::abs(result[i].z() - m.outputs[i].z()), 0.9 * sigma) << "wall point " << i;
   }
-  int between = 0, on_own = 0;
-  for (size_t i = 0; i < layer_points; ++i) {
-    if (!m.between[i] || std::min(m.outputs[i].x(), m.outputs[i].y()) < 0.1 ||
-        std::max(m.outputs[i].x(), m.outputs[i].y()) > 0.45) {
-      continue;
-    }
-    ++between;
-    on_own += std::abs(result[i].z() - m.side[i]) < 0.5 * sigma;
-  }
-  EXPECT_GT(on_own, 0.97 * between);
+  const InnerBetween inner = CountInnerBetween(m, result, 0.45, sigma);
+  EXPECT_GT(inner.on_own, 0.97 * inner.between);
 }
 
 // One flat layer of 120 x 120 points with a second layer six noise deviations above it over
