@@ -1,5 +1,6 @@
 #include "solvers/denoise_point_set.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <numeric>
 #include <stdexcept>
@@ -97,9 +98,11 @@ struct SidesInput {
 
 // SeparateMergedSides over all `sets` at once, then, with `read_layers`,
 // MoveBetweenLayerPointsOntoLayers in each (points between the layers moved with
-// `move_between`), the flagged outliers standing; returns how many points moved.
+// `move_between`), the flagged outliers standing; returns how many points moved, and flags in
+// `split` the points of the first set that SeparateMergedSides moved.
 int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& sets,
-                  bool read_layers, bool move_between, int num_threads) {
+                  bool read_layers, bool move_between, int num_threads,
+                  std::vector<uint8_t>* split) {
   std::vector<energy::PointList> normalized(sets.size());
   std::vector<std::vector<uint8_t>> movable(sets.size());
   std::vector<SidesPart> parts;
@@ -116,6 +119,10 @@ int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& set
   int moved = 0;
   const std::vector<energy::PointList> separated =
       SeparateMergedSides(parts, num_threads, &moved);
+  split->assign(separated[0].size(), 0);
+  for (size_t i = 0; i < separated[0].size(); ++i) {
+    (*split)[i] = separated[0][i] != normalized[0][i];
+  }
   for (size_t s = 0; s < sets.size(); ++s) {
     int between = 0;
     const energy::PointList layered =
@@ -287,20 +294,24 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       movable[i] = !result.indicators.is_outlier[i];
     }
   };
-  if (options.final_step.even_spacing_rounds > 0) {
-    normalize_output();
+  // Spreads the outputs flagged in `spreading` evenly over the surface (even_spacing.h), each
+  // following its own fitted surface: it keeps the blend's offset from it.
+  auto spread_evenly = [&](const std::vector<uint8_t>& spreading) {
     const energy::PointList spread =
-        SpreadEvenly(normalized, result.normals, movable, options.final_step.even_spacing_rounds,
-                     options.settings.num_threads);
+        SpreadEvenly(normalized, result.normals, spreading,
+                     options.final_step.even_spacing_rounds, options.settings.num_threads);
     for (size_t i = 0; i < normalized.size(); ++i) {
-      // Follow i's own surface: keep the blend's offset from it.
       Eigen::Vector3d from, to, normal;
-      if (!surfaces[i].Project(normalized[i], &from, &normal) ||
+      if (!spreading[i] || !surfaces[i].Project(normalized[i], &from, &normal) ||
           !surfaces[i].Project(spread[i], &to, &normal)) {
         continue;
       }
       result.projected[i] = problem.frame.ToInput(normalized[i] + (to - from));
     }
+  };
+  if (options.final_step.even_spacing_rounds > 0) {
+    normalize_output();
+    spread_evenly(movable);
   }
   const NeighborhoodSize& estimates = state.neighborhood;
   const bool feed_back = options.final_step.offset_feedback && estimates.spacing > 0.0 &&
@@ -354,9 +365,18 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     if (!state.left_out.empty()) {
       sets.push_back({extended_inputs, extended_normals, extended.is_outlier, &extended_points});
     }
-    result.num_separated =
-        SeparateSides(problem.frame, sets, read_layers, move_between,
-                      options.settings.num_threads);
+    std::vector<uint8_t> split;
+    result.num_separated = SeparateSides(problem.frame, sets, read_layers, move_between,
+                                         options.settings.num_threads, &split);
+    // Each side of a split region holds about half of the points spread over the merged
+    // layer, drawn at random: spread again, the split points only (docs/method.md, "Even
+    // spacing", "After the sides are told apart").
+    if (options.final_step.even_spacing_rounds > 0 &&
+        std::find(split.begin(), split.end(), 1) != split.end()) {
+      normalize_output();
+      for (size_t i = 0; i < movable.size(); ++i) movable[i] = movable[i] && split[i];
+      spread_evenly(movable);
+    }
   }
   // The heights smoothed (height_smoothing.h), within two noise deviations; a resumed run
   // keeps no noise estimate and skips it.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include <Eigen/Core>
 #include <gtest/gtest.h>
 
 #include "energy/neighbor_graph.h"
@@ -178,6 +179,41 @@ TEST(ThinParts, SidesUnderTwoDeviationsApartComeOutCloserThanTheirInput) {
   EXPECT_EQ(merged.num_separated, 0);
   EXPECT_GT(MeanDistance(sheets.shape, merged.projected), input);
   EXPECT_LT(MeanDistance(sheets.shape, told_apart.projected), input);
+}
+
+// How evenly one sheet of unit area is covered (z above `height` when `upper`, under it when
+// not): the mean squared distance from a grid over its middle to the sheet's nearest point,
+// across z, times the sheet's point count. 1 / pi = 0.32 for points drawn at random, about
+// 0.19 for Poisson-disk samples, 0.17 for points spread evenly.
+double SquaredGapPerPoint(const energy::PointList& points, double height, bool upper) {
+  std::vector<Eigen::Vector2d> side;
+  for (const energy::Point3& p : points) {
+    if ((p.z() > height) == upper) side.emplace_back(p.x(), p.y());
+  }
+  constexpr int kGrid = 100;
+  double sum = 0.0;
+  for (int a = 0; a < kGrid; ++a) {
+    for (int b = 0; b < kGrid; ++b) {
+      const Eigen::Vector2d g(0.8 * a / (kGrid - 1) - 0.4, 0.8 * b / (kGrid - 1) - 0.4);
+      double nearest = HUGE_VAL;  // brute force
+      for (const Eigen::Vector2d& q : side) nearest = std::min(nearest, (q - g).squaredNorm());
+      sum += nearest;
+    }
+  }
+  return sum / (kGrid * kGrid) * side.size();
+}
+
+TEST(ThinParts, EachSideOfMergedSheetsIsSpreadEvenlyOnceToldApart) {
+  // The sheets of the test above: the output is spread evenly while the sides are merged,
+  // so each side, once told apart, holds a random half of it, with gaps; the split points
+  // are spread again. Measured: 0.172 and 0.174, 0.249 and 0.258 without the second spreading.
+  const NoisyShape sheets = Noisy("sheets:size=1,gap=0.04", 10000, 0.04 / 1.9);
+  const DenoiseResult result = Denoise(sheets.points, true);
+  ASSERT_GT(result.num_separated, 0.3 * sheets.points.size());
+  for (bool upper : {false, true}) {
+    const double gap = SquaredGapPerPoint(result.projected, 0.0, upper);
+    EXPECT_LT(gap, 0.2) << "upper " << upper;
+  }
 }
 
 TEST(ThinParts, NoiseUniformAcrossASlabIsOneSurfaceNotTwoSides) {
