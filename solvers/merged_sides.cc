@@ -196,6 +196,26 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                    for (size_t b = 0; b < used; ++b) sum += candidates[b].second;
                    if (used > 0) reference[i] = outputs[i] + (sum / used) * n;
                  });
+  if (!other_layer) return reference;
+  // The same test over the outputs within kSidesOtherLayerReachBands bands, where the
+  // searched neighbours did not see another layer.
+  const double reach = kSidesOtherLayerReachBands * band;
+  search.ForEachWithin(count, num_threads, [&](int r) { return anchor_points[r]; },
+                       [reach](int) { return reach * reach; },
+                       [&](int r, const std::vector<int>& within) {
+                         const int i = anchors[r];
+                         if ((*other_layer)[i]) return;
+                         const energy::Point3& n = normals[i];
+                         int facing = 0, beyond = 0;
+                         for (int b : within) {
+                           if (std::abs(n.dot(normals[anchors[b]])) < min_cosine) continue;
+                           ++facing;
+                           beyond += !(std::abs(n.dot(anchor_points[b] - outputs[i])) < band);
+                         }
+                         if (facing > 0 && beyond >= kSidesOtherLayerShare * facing) {
+                           (*other_layer)[i] = 1;
+                         }
+                       });
   return reference;
 }
 

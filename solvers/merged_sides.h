@@ -160,6 +160,14 @@ constexpr double kSidesReferenceBandDeviations = 2.0;
 // it (docs/method.md, "Sides split already").
 constexpr double kSidesOtherLayerShare = 0.25;
 constexpr double kSidesSplitRegionShare = 0.5;
+// Where the points are dense, the searched neighbours span less than the gap of sides split
+// cleanly: at 50K points, two sheets 5.9 deviations apart are out of each other's reach, the
+// offsets from each sheet, cut off at the mid-plane, read under the seed bar in enough
+// regions, and each sheet was split into two layers a deviation apart. So an output also
+// sees another layer where a quarter of the outputs facing its way within
+// kSidesOtherLayerReachBands bands lie beyond the band (docs/method.md, "Beyond the searched
+// neighbours").
+constexpr double kSidesOtherLayerReachBands = 4.0;
 
 // kMedianAbsToSigma times the median of |n_i.(inputs[i] - outputs[i])| over the anchors
 // (indices into all three, normals of unit length); 0 without anchors.
