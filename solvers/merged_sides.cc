@@ -196,10 +196,20 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                    for (size_t b = 0; b < used; ++b) sum += candidates[b].second;
                    if (used > 0) reference[i] = outputs[i] + (sum / used) * n;
                  });
-  if (!other_layer) return reference;
-  // The same test over the outputs within kSidesOtherLayerReachBands bands, where the
-  // searched neighbours did not see another layer.
+  return reference;
+}
+
+void FlagOtherLayerWithinReach(const energy::PointList& outputs,
+                               const energy::PointList& normals,
+                               const std::vector<int>& anchors, double band, int num_threads,
+                               std::vector<uint8_t>* other_layer) {
+  const int count = static_cast<int>(anchors.size());
+  if (!(band > 0.0) || count < 2) return;
+  energy::PointList anchor_points(count);
+  for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
+  const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
   const double reach = kSidesOtherLayerReachBands * band;
+  const energy::NearestNeighbors search(anchor_points);
   search.ForEachWithin(count, num_threads, [&](int r) { return anchor_points[r]; },
                        [reach](int) { return reach * reach; },
                        [&](int r, const std::vector<int>& within) {
@@ -216,20 +226,32 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                            (*other_layer)[i] = 1;
                          }
                        });
-  return reference;
 }
 
 namespace {
 
-// A part's anchors (its movable points with a normal), its reference, and every point's
-// offset from its anchor's reference plane, with the regions they give.
+// A part's anchors (its movable points with a normal), its reference and band, every point's
+// anchor (its own or its nearest), its offset from that anchor's reference plane, and whether
+// that anchor sees another layer, with the regions they give.
 struct MeasuredPart {
   std::vector<int> anchors;
   energy::PointList anchor_points;
   energy::PointList reference;
+  double band = 0.0;
+  std::vector<int> anchor_of;
+  energy::PointList positions;
   std::vector<double> offset;
+  std::vector<uint8_t> other_layer;
   SideRegions regions;
 };
+
+void MeasureRegions(int num_threads, MeasuredPart* measured) {
+  const int n = static_cast<int>(measured->positions.size());
+  std::vector<uint8_t> split(n);
+  for (int i = 0; i < n; ++i) split[i] = measured->other_layer[measured->anchor_of[i]];
+  measured->regions = MeasureSideRegions(measured->positions, measured->offset,
+                                         measured->anchors, num_threads, &split);
+}
 
 MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
   MeasuredPart measured;
@@ -240,7 +262,8 @@ MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
   if (static_cast<int>(anchors.size()) < kSidesRegionPoints) return measured;
 
   // Every point's offset from its anchor's reference plane: its own, or its nearest anchor's.
-  std::vector<int> anchor_of(n, -1);
+  std::vector<int>& anchor_of = measured.anchor_of;
+  anchor_of.assign(n, -1);
   for (int i : anchors) anchor_of[i] = i;
   measured.anchor_points.resize(anchors.size());
   for (size_t r = 0; r < anchors.size(); ++r) measured.anchor_points[r] = outputs[anchors[r]];
@@ -256,22 +279,18 @@ MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
                             anchor_of[others[r]] = anchors[nearest[0]];
                           });
   }
-  const double band = kSidesReferenceBandDeviations *
-                      OffsetDeviation(part.inputs, outputs, part.normals, anchors);
-  std::vector<uint8_t> other_layer;
-  measured.reference =
-      SidesReference(outputs, part.normals, anchors, band, num_threads, &other_layer);
-  energy::PointList positions(n);
+  measured.band = kSidesReferenceBandDeviations *
+                 OffsetDeviation(part.inputs, outputs, part.normals, anchors);
+  measured.reference = SidesReference(outputs, part.normals, anchors, measured.band,
+                                      num_threads, &measured.other_layer);
+  measured.positions.resize(n);
   measured.offset.resize(n);
   for (int i = 0; i < n; ++i) {
     const int a = anchor_of[i];
-    positions[i] = outputs[a];
+    measured.positions[i] = outputs[a];
     measured.offset[i] = part.normals[a].dot(part.inputs[i] - measured.reference[a]);
   }
-  std::vector<uint8_t> split(n);
-  for (int i = 0; i < n; ++i) split[i] = other_layer[anchor_of[i]];
-  measured.regions =
-      MeasureSideRegions(positions, measured.offset, anchors, num_threads, &split);
+  MeasureRegions(num_threads, &measured);
   return measured;
 }
 
@@ -300,7 +319,19 @@ std::vector<energy::PointList> SeparateMergedSides(const std::vector<SidesPart>&
   std::vector<SideRegions*> regions;
   for (const SidesPart& part : parts) measured.push_back(MeasurePart(part, num_threads));
   for (MeasuredPart& m : measured) regions.push_back(&m.regions);
-  const bool merged = MarkMergedRegions(regions, num_threads);
+  bool merged = MarkMergedRegions(regions, num_threads);
+  if (merged) {
+    // The outputs that see another layer within the reach as well. More such outputs only
+    // take seeds and growable regions away, so where nothing merges without them, nothing
+    // would with them: the wider search runs only here.
+    for (size_t p = 0; p < parts.size(); ++p) {
+      if (static_cast<int>(measured[p].anchors.size()) < kSidesRegionPoints) continue;
+      FlagOtherLayerWithinReach(parts[p].outputs, parts[p].normals, measured[p].anchors,
+                                measured[p].band, num_threads, &measured[p].other_layer);
+      MeasureRegions(num_threads, &measured[p]);
+    }
+    merged = MarkMergedRegions(regions, num_threads);
+  }
   int count = 0;
   std::vector<energy::PointList> result;
   for (size_t p = 0; p < parts.size(); ++p) {

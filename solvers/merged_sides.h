@@ -165,8 +165,8 @@ constexpr double kSidesSplitRegionShare = 0.5;
 // offsets from each sheet, cut off at the mid-plane, read under the seed bar in enough
 // regions, and each sheet was split into two layers a deviation apart. So an output also
 // sees another layer where a quarter of the outputs facing its way within
-// kSidesOtherLayerReachBands bands lie beyond the band (docs/method.md, "Beyond the searched
-// neighbours").
+// kSidesOtherLayerReachBands bands lie beyond the band (FlagOtherLayerWithinReach;
+// docs/method.md, "Beyond the searched neighbours").
 constexpr double kSidesOtherLayerReachBands = 4.0;
 
 // kMedianAbsToSigma times the median of |n_i.(inputs[i] - outputs[i])| over the anchors
@@ -183,6 +183,16 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                                  const energy::PointList& normals,
                                  const std::vector<int>& anchors, double band, int num_threads,
                                  std::vector<uint8_t>* other_layer = nullptr);
+
+// Flags in `other_layer` (per output, as SidesReference sets it) each anchor not flagged yet
+// where kSidesOtherLayerShare or more of the anchors' outputs within
+// kSidesOtherLayerReachBands x `band` that face its way (normals within
+// kSidesReferenceMaxAngleDegrees) lie beyond the band. Deterministic for any thread count.
+// SeparateMergedSides runs it only where the regions read as merged without it.
+void FlagOtherLayerWithinReach(const energy::PointList& outputs,
+                               const energy::PointList& normals,
+                               const std::vector<int>& anchors, double band, int num_threads,
+                               std::vector<uint8_t>* other_layer);
 
 // One set of points to tell sides apart in: `outputs` are the projections of `inputs` (same
 // order) with unit or zero `normals`; points without `movable` or a normal stay, but their

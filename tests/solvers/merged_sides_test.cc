@@ -401,6 +401,7 @@ TEST(SeparateMergedSides, DenseLayersFartherApartThanTheSearchedNeighboursReachS
       kSidesReferenceBandDeviations * OffsetDeviation(m.inputs, m.outputs, m.normals, all);
   std::vector<uint8_t> other_layer;
   SidesReference(m.outputs, m.normals, all, band, 2, &other_layer);
+  FlagOtherLayerWithinReach(m.outputs, m.normals, all, band, 2, &other_layer);
   EXPECT_GT(std::count(other_layer.begin(), other_layer.end(), 1), 0.99 * other_layer.size());
   const std::vector<uint8_t> movable(m.outputs.size(), 1);
   int moved = -1;
@@ -461,6 +462,10 @@ TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteFor
   EXPECT_EQ(SidesReference(outputs, normals, anchors, band, 1, &other_layer_one_thread),
             reference);
   EXPECT_EQ(other_layer_one_thread, other_layer);
+  std::vector<uint8_t> within_reach = other_layer, within_reach_one_thread = other_layer;
+  FlagOtherLayerWithinReach(outputs, normals, anchors, band, 2, &within_reach);
+  FlagOtherLayerWithinReach(outputs, normals, anchors, band, 1, &within_reach_one_thread);
+  EXPECT_EQ(within_reach_one_thread, within_reach);
   const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
   int moved = 0, flagged = 0, flagged_within = 0, tested = 0;
   for (size_t i = 0; i < outputs.size(); ++i) {
@@ -484,9 +489,10 @@ TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteFor
       if (std::abs(h) >= band) continue;
       across.emplace_back(by_distance[b].first - h * h, h);
     }
-    // Another layer: kSidesOtherLayerShare or more of the facing neighbours beyond the band,
-    // or of the facing anchors within kSidesOtherLayerReachBands bands.
+    // Another layer: kSidesOtherLayerShare or more of the facing neighbours beyond the band;
+    // within the reach too, of the facing anchors within kSidesOtherLayerReachBands bands.
     const int beyond = facing - static_cast<int>(across.size());
+    EXPECT_EQ(other_layer[i] != 0, beyond >= kSidesOtherLayerShare * facing) << "point " << i;
     int facing_within = 0, beyond_within = 0;
     for (const auto& [squared_distance, j] : by_distance) {
       if (squared_distance >= std::pow(kSidesOtherLayerReachBands * band, 2)) break;
@@ -494,10 +500,10 @@ TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteFor
       ++facing_within;
       beyond_within += std::abs(normals[i].dot(outputs[j] - outputs[i])) >= band;
     }
-    EXPECT_EQ(other_layer[i] != 0, beyond >= kSidesOtherLayerShare * facing ||
-                                       beyond_within >= kSidesOtherLayerShare * facing_within)
+    EXPECT_EQ(within_reach[i] != 0,
+              other_layer[i] || beyond_within >= kSidesOtherLayerShare * facing_within)
         << "point " << i;
-    flagged_within += beyond < kSidesOtherLayerShare * facing && other_layer[i];
+    flagged_within += within_reach[i] && !other_layer[i];
     flagged += other_layer[i];
     ++tested;
     std::sort(across.begin(), across.end());
