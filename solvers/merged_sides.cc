@@ -245,6 +245,7 @@ struct MeasuredPart {
   SideRegions regions;
 };
 
+// The part's regions, a point counting as split where its anchor sees another layer.
 void MeasureRegions(int num_threads, MeasuredPart* measured) {
   const int n = static_cast<int>(measured->positions.size());
   std::vector<uint8_t> split(n);
