@@ -359,29 +359,46 @@ TEST(SeparateMergedSides, OutputsOnTwoLayersCloserThanTheSidesAreSeparated) {
   EXPECT_LT(MeanDistanceToSide(separated, m.side), 0.4 * sigma);
 }
 
+// Sides +-half_gap apart as MergedSheet draws them, split cleanly: each output on the layer
+// nearer its input; every point an anchor, and the reference's band.
+struct SplitSides {
+  Merged m;
+  std::vector<int> all;
+  double band = 0.0;
+};
+
+SplitSides SplitCleanly(double half_gap, double sigma, uint64_t seed) {
+  SplitSides split{MergedSheet(half_gap, sigma, seed), {}, 0.0};
+  Merged& m = split.m;
+  for (size_t i = 0; i < m.outputs.size(); ++i) {
+    m.outputs[i].z() = m.inputs[i].z() >= 0.0 ? half_gap : -half_gap;
+    split.all.push_back(static_cast<int>(i));
+  }
+  split.band =
+      kSidesReferenceBandDeviations * OffsetDeviation(m.inputs, m.outputs, m.normals, split.all);
+  return split;
+}
+
+void ExpectNothingMoves(const Merged& m) {
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  int moved = -1;
+  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved),
+            m.outputs);
+  EXPECT_EQ(moved, 0);
+}
+
 // A part the graph split cleanly, its sides 4.2 noise deviations apart, each output on the
 // layer nearer its input: the offsets from a layer are the noise cut off where it crosses
 // the mid-plane, whose kurtosis reads about 2.75 (simulated), so about half the regions read
 // under the seed bar. Every output sees the other layer beyond the band, and nothing moves.
 TEST(SeparateMergedSides, OutputsOnLayersFartherApartThanTheBandStay) {
   const double sigma = 0.002;
-  Merged m = MergedSheet(2.1 * sigma, sigma, 23);
-  for (size_t i = 0; i < m.outputs.size(); ++i) {
-    m.outputs[i].z() = (m.inputs[i].z() >= 0.0 ? 2.1 : -2.1) * sigma;
-  }
-  std::vector<int> all(m.outputs.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  const double band =
-      kSidesReferenceBandDeviations * OffsetDeviation(m.inputs, m.outputs, m.normals, all);
-  EXPECT_LT(band, 2.0 * sigma);
+  const SplitSides split = SplitCleanly(2.1 * sigma, sigma, 23);
+  EXPECT_LT(split.band, 2.0 * sigma);
   std::vector<uint8_t> other_layer;
-  SidesReference(m.outputs, m.normals, all, band, 2, &other_layer);
+  SidesReference(split.m.outputs, split.m.normals, split.all, split.band, 2, &other_layer);
   EXPECT_EQ(std::count(other_layer.begin(), other_layer.end(), 1), other_layer.size());
-  const std::vector<uint8_t> movable(m.outputs.size(), 1);
-  int moved = -1;
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved),
-            m.outputs);
-  EXPECT_EQ(moved, 0);
+  ExpectNothingMoves(split.m);
 }
 
 // The same, but the layers 6 deviations apart over points as dense as the noise is wide:
@@ -391,23 +408,13 @@ TEST(SeparateMergedSides, OutputsOnLayersFartherApartThanTheBandStay) {
 // reach, 9 outputs see the other layer and 4,148 move.
 TEST(SeparateMergedSides, DenseLayersFartherApartThanTheSearchedNeighboursReachStay) {
   const double sigma = 0.02;
-  Merged m = MergedSheet(3.0 * sigma, sigma, 39);
-  for (size_t i = 0; i < m.outputs.size(); ++i) {
-    m.outputs[i].z() = (m.inputs[i].z() >= 0.0 ? 3.0 : -3.0) * sigma;
-  }
-  std::vector<int> all(m.outputs.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-  const double band =
-      kSidesReferenceBandDeviations * OffsetDeviation(m.inputs, m.outputs, m.normals, all);
+  const SplitSides split = SplitCleanly(3.0 * sigma, sigma, 39);
   std::vector<uint8_t> other_layer;
-  SidesReference(m.outputs, m.normals, all, band, 2, &other_layer);
-  FlagOtherLayerWithinReach(m.outputs, m.normals, all, band, 2, &other_layer);
+  SidesReference(split.m.outputs, split.m.normals, split.all, split.band, 2, &other_layer);
+  FlagOtherLayerWithinReach(split.m.outputs, split.m.normals, split.all, split.band, 2,
+                            &other_layer);
   EXPECT_GT(std::count(other_layer.begin(), other_layer.end(), 1), 0.99 * other_layer.size());
-  const std::vector<uint8_t> movable(m.outputs.size(), 1);
-  int moved = -1;
-  EXPECT_EQ(SeparateMergedSides(m.inputs, m.outputs, m.normals, movable, 2, &moved),
-            m.outputs);
-  EXPECT_EQ(moved, 0);
+  ExpectNothingMoves(split.m);
 }
 
 TEST(OffsetDeviation, IsTheScaledMedianOffsetAlongTheNormalOverTheAnchorsByBruteForce) {
