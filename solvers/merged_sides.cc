@@ -20,6 +20,10 @@ double MaxGrowthKurtosis(int region_points) {
   return 3.0 - kSidesGrowthStandardErrors * std::sqrt(24.0 / region_points);
 }
 
+double ChanceShareUnder(double standard_errors) {
+  return 0.5 * std::erfc(standard_errors / std::sqrt(2.0));  // Phi(-standard_errors)
+}
+
 bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides) {
   if (!(m2 > 0.0) || !(m4 < max_kurtosis * m2 * m2)) return false;
   if (!(m4 > energy::kMinTwoSidesKurtosis * m2 * m2)) return false;
@@ -132,8 +136,18 @@ bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads) 
     num_regions += regions->seed.size();
     num_seeds += std::count(regions->seed.begin(), regions->seed.end(), 1);
   }
-  const bool merged = num_regions > 0 && num_seeds >= kMinMergedRegionShare * num_regions;
-  const bool grow = num_seeds >= kMinGrowthSeedShare * num_regions;
+  size_t num_growable = 0;
+  for (const SideRegions* regions : parts) {
+    num_growable += std::count(regions->growable.begin(), regions->growable.end(), 1);
+  }
+  const double total = static_cast<double>(num_regions);
+  const bool mostly_growable =
+      num_seeds >= kMinSeedChanceMultiple * ChanceShareUnder(kSidesKurtosisStandardErrors) *
+                       total &&
+      num_growable >= kMinMostlyGrowableShare * total;
+  const bool merged =
+      num_regions > 0 && (num_seeds >= kMinMergedRegionShare * total || mostly_growable);
+  const bool grow = num_seeds >= kMinGrowthSeedShare * total || mostly_growable;
   for (SideRegions* regions : parts) {
     regions->merged.assign(regions->seed.size(), 0);
     if (!merged) continue;

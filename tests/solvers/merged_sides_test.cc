@@ -193,7 +193,7 @@ double PatternOffset(int index, int period, int nonzero) {
   return phase % 2 == 0 ? 1.0 : -1.0;
 }
 
-// A strip of 300 x 20 points, sheared (no ties in distance), with the offset of point
+// A strip of `columns` x 20 points, sheared (no ties in distance), with the offset of point
 // x * 20 + y given by offset(x, index).
 struct Strip {
   energy::PointList positions;
@@ -202,10 +202,10 @@ struct Strip {
 };
 
 template <typename Offset>
-Strip MakeStrip(const Offset& offset) {
-  constexpr int kColumns = 300, kRows = 20;
+Strip MakeStrip(const Offset& offset, int columns = 300) {
+  constexpr int kRows = 20;
   Strip strip;
-  for (int x = 0; x < kColumns; ++x) {
+  for (int x = 0; x < columns; ++x) {
     for (int y = 0; y < kRows; ++y) {
       const int index = x * kRows + y;
       strip.positions.emplace_back(x, y + 0.01 * x, 0.0);
@@ -218,13 +218,19 @@ Strip MakeStrip(const Offset& offset) {
 
 // Three parts along x: kurtosis 2.5 (a seed's, under MaxMergedKurtosis = 2.747) up to
 // column `seed_columns`, 2.9 (between it and MaxGrowthKurtosis = 2.937; over a bar one
-// standard error under 3, 2.874) from column `growable_from` up to 200, and 3 elsewhere.
-Strip SeedsThenGrowableThenOneSheet(int seed_columns, int growable_from = 100) {
-  return MakeStrip([=](int x, int index) {
-    if (x < seed_columns) return PatternOffset(index, 5, 2);  // 1 / 0.4
-    if (x >= growable_from && x < 200) return PatternOffset(index, 29, 10);  // 1 / (10 / 29)
-    return PatternOffset(index, 6, 2);  // 1 / (1 / 3)
-  });
+// standard error under 3, 2.874) from column `growable_from` up to `growable_until`, and 3
+// elsewhere, over `columns`.
+Strip SeedsThenGrowableThenOneSheet(int seed_columns, int growable_from = 100,
+                                    int growable_until = 200, int columns = 300) {
+  return MakeStrip(
+      [=](int x, int index) {
+        if (x < seed_columns) return PatternOffset(index, 5, 2);  // 1 / 0.4
+        if (x >= growable_from && x < growable_until) {
+          return PatternOffset(index, 29, 10);  // 1 / (10 / 29)
+        }
+        return PatternOffset(index, 6, 2);  // 1 / (1 / 3)
+      },
+      columns);
 }
 
 // Seeds in the first 36 columns (regions centred in the first 38: a share between
@@ -273,6 +279,36 @@ TEST(MarkMergedRegions, NothingGrowsWithSeedsUnderTheGrowthShare) {
   EXPECT_LT(seeds, kMinGrowthSeedShare * few_seeds.seed.size());
   EXPECT_TRUE(MarkMergedRegions({&few_seeds}, 2));
   EXPECT_EQ(few_seeds.merged, few_seeds.seed);
+}
+
+int CountOf(const std::vector<uint8_t>& flags) {
+  return static_cast<int>(std::count(flags.begin(), flags.end(), 1));
+}
+
+TEST(MarkMergedRegions, FewSeedsAmongRegionsMostlyGrowableAreMergedAndGrow) {
+  EXPECT_NEAR(ChanceShareUnder(kSidesKurtosisStandardErrors), 0.02275, 1e-5);  // Phi(-2)
+  EXPECT_NEAR(ChanceShareUnder(kSidesGrowthStandardErrors), 0.30854, 1e-5);    // Phi(-0.5)
+  // A strip of 600 columns: seeds in the first 26 (the regions centred within 37 columns of
+  // the end span the same 75; under kMinMergedRegionShare of the regions), growable up to
+  // column 500: merged from the seeds through every growable region, not past them.
+  SideRegions regions = Measure(SeedsThenGrowableThenOneSheet(26, 26, 500, 600));
+  const int n = static_cast<int>(regions.seed.size());
+  const int seeds = CountOf(regions.seed), growable = CountOf(regions.growable);
+  ASSERT_LT(seeds, kMinMergedRegionShare * n);
+  ASSERT_GT(seeds, kMinSeedChanceMultiple * ChanceShareUnder(kSidesKurtosisStandardErrors) * n);
+  ASSERT_GT(growable, kMinMostlyGrowableShare * n);
+  EXPECT_TRUE(MarkMergedRegions({&regions}, 2));
+  for (int c = 0; c < n; ++c) {
+    EXPECT_EQ(regions.merged[c], regions.seed[c] || regions.growable[c]) << "region " << c;
+  }
+  EXPECT_LT(CountOf(regions.merged), n);
+  // The same seeds with growable regions only up to column 400, under the growable bar:
+  // nothing is merged.
+  SideRegions fewer = Measure(SeedsThenGrowableThenOneSheet(26, 26, 400, 600));
+  ASSERT_EQ(CountOf(fewer.seed), seeds);
+  ASSERT_LT(CountOf(fewer.growable), kMinMostlyGrowableShare * n);
+  EXPECT_FALSE(MarkMergedRegions({&fewer}, 2));
+  EXPECT_EQ(CountOf(fewer.merged), 0);
 }
 
 TEST(MarkMergedRegions, TheSeedSharesAreCountedOverAllParts) {
