@@ -436,10 +436,11 @@ std::vector<Parameter> FinalStepParameters() {
             "nearest across its normal within two deviations of the inputs' offsets along it) "
             "read as two sides of a thin part merged into one (kurtosis under 2.75 over 1,500 "
             "points; not where half their points see another output layer beyond that band, "
-            "among their 120 nearest outputs or within 4 bands), "
+            "among their 120 nearest outputs or within 5 bands), "
             "move each output point to the side its offset's sign picks; only where a tenth or "
             "more of these regions read as merged (where 15% do, neighbouring regions under "
-            "2.94 join them); and where the noise reads wider than 1.05 spacings, or where "
+            "2.94 join them), or where 4.6% do and all the offsets read a kurtosis 3 standard "
+            "errors under 3 (then the neighbours join them too); and where the noise reads wider than 1.05 spacings, or where "
             "the layers lie 4 deviations apart or more (not at a thin part's rim), move "
             "outputs left between two output layers onto the layer nearer their input",
             "", "false"},

@@ -93,6 +93,13 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
         regions.seed[c] = regions.growable[c] && m4 < seed_kurtosis * m2 * m2;
         regions.median_abs_offset[c] = Median(&magnitudes);
       });
+  for (size_t i = 0; i < offsets.size(); ++i) {
+    if (split && (*split)[i]) continue;
+    const double z2 = offsets[i] * offsets[i];
+    regions.pooled_m2_sum += z2;
+    regions.pooled_m4_sum += z2 * z2;
+    ++regions.pooled_count;
+  }
   return regions;
 }
 
@@ -136,18 +143,21 @@ bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads) 
     num_regions += regions->seed.size();
     num_seeds += std::count(regions->seed.begin(), regions->seed.end(), 1);
   }
-  size_t num_growable = 0;
+  double m2 = 0.0, m4 = 0.0, count = 0.0;
   for (const SideRegions* regions : parts) {
-    num_growable += std::count(regions->growable.begin(), regions->growable.end(), 1);
+    m2 += regions->pooled_m2_sum;
+    m4 += regions->pooled_m4_sum;
+    count += static_cast<double>(regions->pooled_count);
   }
   const double total = static_cast<double>(num_regions);
-  const bool mostly_growable =
+  const bool merged_as_a_whole =
       num_seeds >= kMinSeedChanceMultiple * ChanceShareUnder(kSidesKurtosisStandardErrors) *
                        total &&
-      num_growable >= kMinMostlyGrowableShare * total;
+      count > 0.0 &&
+      m4 * count < (3.0 - kPooledKurtosisStandardErrors * std::sqrt(24.0 / count)) * m2 * m2;
   const bool merged =
-      num_regions > 0 && (num_seeds >= kMinMergedRegionShare * total || mostly_growable);
-  const bool grow = num_seeds >= kMinGrowthSeedShare * total || mostly_growable;
+      num_regions > 0 && (num_seeds >= kMinMergedRegionShare * total || merged_as_a_whole);
+  const bool grow = num_seeds >= kMinGrowthSeedShare * total || merged_as_a_whole;
   for (SideRegions* regions : parts) {
     regions->merged.assign(regions->seed.size(), 0);
     if (!merged) continue;
