@@ -71,11 +71,10 @@ constexpr double kMinGrowthSeedShare = 0.15;
 // standard errors (sqrt(24 / n)) under 3. So the regions also count as merged, and grow,
 // where the pooled offsets read kPooledKurtosisStandardErrors under 3 and the seeds are
 // kMinSeedChanceMultiple times the share of one sheet's regions that reads under the seed
-// bar by chance (ChanceShareUnder: Phi(-2) = 2.3%, so 4.6%). Over 135 cells of the
-// benchmark's meshes at 10K points (5 draws of each at 3 noise levels) the pooled offsets
-// read at most 1.9 standard errors under 3 (lilium); the share of growable regions, which
-// a chance draw of one sheet also moves as a whole, did not tell them apart as well
-// (docs/method.md, "A cloud read as merged as a whole").
+// bar by chance (ChanceShareUnder: Phi(-2) = 2.3%, so 4.6%). On the benchmark's 27 mesh
+// cells at 10K points the pooled offsets read at most 1.9 standard errors under 3 (lilium).
+// The share of growable regions, which a chance draw of one sheet also moves as a whole, did
+// not tell them apart as well (docs/method.md, "A cloud read as merged as a whole").
 constexpr double kMinSeedChanceMultiple = 2.0;
 constexpr double kPooledKurtosisStandardErrors = 3.0;
 
