@@ -440,9 +440,10 @@ std::vector<Parameter> FinalStepParameters() {
             "move each output point to the side its offset's sign picks; only where a tenth or "
             "more of these regions read as merged (where 15% do, neighbouring regions under "
             "2.94 join them), or where 4.6% do and all the offsets read a kurtosis 3 standard "
-            "errors under 3 (then the neighbours join them too); and where the noise reads wider than 1.05 spacings, or where "
-            "the layers lie 4 deviations apart or more (not at a thin part's rim), move "
-            "outputs left between two output layers onto the layer nearer their input",
+            "errors under 3 (then the neighbours join them too); and where the noise reads "
+            "wider than 1.05 spacings, or where the layers lie 4 deviations apart or more "
+            "(not at a thin part's rim), move outputs left between two output layers onto the "
+            "layer nearer their input",
             "", "false"},
            [](O& o) -> bool& { return o.final_step.separate_merged_sides; }),
       Number("outlier_fraction", kBoth,
