@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 #include <Eigen/Cholesky>
@@ -277,6 +278,24 @@ bool MoveOntoLayer(const Layers& layers, const energy::Point3& o, const energy::
   return true;
 }
 
+// The centres (of `centres`, each with its squared reach) whose reach holds one of `points`.
+std::vector<int> CentresReaching(const energy::PointList& centres,
+                                 const std::vector<double>& reach,
+                                 const energy::PointList& points, int num_threads) {
+  std::vector<uint8_t> reaches(centres.size(), 0);
+  const energy::NearestNeighbors search(points);
+  search.ForEachWithin(static_cast<int>(centres.size()), num_threads,
+                       [&](int c) { return centres[c]; }, [&](int c) { return reach[c]; },
+                       [&](int c, const std::vector<int>& within) {
+                         reaches[c] = !within.empty();
+                       });
+  std::vector<int> reaching;
+  for (size_t c = 0; c < centres.size(); ++c) {
+    if (reaches[c]) reaching.push_back(static_cast<int>(c));
+  }
+  return reaching;
+}
+
 }  // namespace
 
 energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inputs,
@@ -299,6 +318,8 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
   std::vector<double> reach(num_centres);
   energy::PointList anchor_points(count), centre_points(num_centres);
   std::vector<Layers> layers(num_centres);
+  double last_deviation = 0.0;
+  energy::PointList last_moves;  // where the last pass's moved outputs were and are
   for (int pass = 0; pass < kBetweenLayerPasses; ++pass) {
     const energy::PointList before = result;  // this pass reads its layers from these
     const double deviation = OffsetDeviation(inputs, before, normals, anchors);
@@ -319,14 +340,25 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                        reach[c] = kLayerReachSquared * squared_distances[found - 1];
                      });
     }
-    search.ForEachWithin(num_centres, num_threads, [&](int c) { return centre_points[c]; },
-                         [&](int c) { return reach[c]; },
-                         [&](int c, const std::vector<int>& within) {
+    // A later pass reads again only the centres whose reach held or holds an output the last
+    // pass moved, where the deviation stayed: the others would read the same outputs. Where
+    // the last pass moved more outputs than there are centres, it reads them all.
+    std::vector<int> read(num_centres);
+    std::iota(read.begin(), read.end(), 0);
+    if (pass > 0 && deviation == last_deviation &&
+        last_moves.size() < 2 * static_cast<size_t>(num_centres)) {
+      read = CentresReaching(centre_points, reach, last_moves, num_threads);
+    }
+    search.ForEachWithin(static_cast<int>(read.size()), num_threads,
+                         [&](int r) { return centre_points[read[r]]; },
+                         [&](int r) { return reach[read[r]]; },
+                         [&](int r, const std::vector<int>& within) {
                            thread_local std::vector<int> candidates;
                            candidates.resize(within.size());
                            for (size_t b = 0; b < within.size(); ++b) {
                              candidates[b] = anchors[within[b]];
                            }
+                           const int c = read[r];
                            layers[c] = ReadLayers(inputs, before, candidates, normal[c],
                                                   centre_points[c], deviation);
                          });
@@ -351,6 +383,14 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                             result[i] = before[i] + move * around.normal;
                           });
     if (result == before) break;  // the next pass would read the same layers
+    last_deviation = deviation;
+    last_moves.clear();
+    for (int r = 0; r < count; ++r) {
+      const int i = anchors[r];
+      if (result[i] == before[i]) continue;
+      last_moves.push_back(before[i]);
+      last_moves.push_back(result[i]);
+    }
   }
   if (moved) {
     for (size_t i = 0; i < outputs.size(); ++i) *moved += result[i] != outputs[i];
