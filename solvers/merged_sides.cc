@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 
 #include "energy/nearest_neighbors.h"
@@ -69,29 +70,43 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
   regions.seed.assign(num_centres, 0);
   regions.merged.assign(num_centres, 0);
   regions.median_abs_offset.resize(num_centres);
-  const double seed_kurtosis = MaxMergedKurtosis(kSidesRegionPoints);
-  const double growth_kurtosis = MaxGrowthKurtosis(kSidesRegionPoints);
+  regions.unsplit_only.assign(num_centres, 0);
+  regions.counted.assign(num_centres, 1);
   const energy::NearestNeighbors region_search(positions);
   region_search.ForEach(
       num_centres, kSidesRegionPoints, num_threads,
       [&](int c) { return regions.centres[c]; },
       [&](int c, const int* nearest, const double*, int found) {
-        double m2 = 0.0, m4 = 0.0;
+        // The moments over all the region's points and over those that see no other layer.
+        double m2 = 0.0, m4 = 0.0, unsplit_m2 = 0.0, unsplit_m4 = 0.0;
         int split_points = 0;
         std::vector<double> magnitudes(found);
         for (int j = 0; j < found; ++j) {
-          if (split) split_points += (*split)[nearest[j]];
           const double z = offsets[nearest[j]];
           m2 += z * z;
           m4 += z * z * z * z;
           magnitudes[j] = std::abs(z);
+          if (split && (*split)[nearest[j]]) {
+            ++split_points;
+          } else {
+            unsplit_m2 += z * z;
+            unsplit_m4 += z * z * z * z;
+          }
         }
-        m2 /= found;
-        m4 /= found;
-        regions.growable[c] = split_points < kSidesSplitRegionShare * found &&
-                              EstimateTwoSides(m2, m4, growth_kurtosis, &regions.sides[c]);
-        regions.seed[c] = regions.growable[c] && m4 < seed_kurtosis * m2 * m2;
+        int used = found;
+        if (split_points >= kSidesSplitRegionShare * found) {
+          regions.unsplit_only[c] = 1;
+          used = found - split_points;
+          regions.counted[c] = used >= kMinUnsplitRegionPoints;
+          m2 = unsplit_m2;
+          m4 = unsplit_m4;
+        }
         regions.median_abs_offset[c] = Median(&magnitudes);
+        if (!regions.counted[c]) return;
+        m2 /= used;
+        m4 /= used;
+        regions.growable[c] = EstimateTwoSides(m2, m4, MaxGrowthKurtosis(used), &regions.sides[c]);
+        regions.seed[c] = regions.growable[c] && m4 < MaxMergedKurtosis(used) * m2 * m2;
       });
   for (size_t i = 0; i < offsets.size(); ++i) {
     if (split && (*split)[i]) continue;
@@ -105,20 +120,33 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
 
 namespace {
 
-// The growable regions connected to a merged one through growable regions among each other's
-// kSidesGrowthNeighbors nearest centres, merged too.
-void GrowMergedRegions(int num_threads, SideRegions* regions) {
-  const int num_centres = static_cast<int>(regions->centres.size());
-  if (num_centres == 0) return;
-  const int neighbors = std::min(num_centres, kSidesGrowthNeighbors + 1);
-  std::vector<int> adjacent(static_cast<size_t>(num_centres) * neighbors);
-  const energy::NearestNeighbors centre_search(regions->centres);
-  centre_search.ForEach(num_centres, neighbors, num_threads,
-                        [&](int c) { return regions->centres[c]; },
+// Each region's kSidesGrowthNeighbors nearest centres (itself among them), `width` a row.
+struct CentreNeighbors {
+  int width = 0;
+  std::vector<int> nearest;
+  const int* Of(int c) const { return nearest.data() + static_cast<size_t>(c) * width; }
+};
+
+CentreNeighbors NearestCentres(const SideRegions& regions, int num_threads) {
+  const int num_centres = static_cast<int>(regions.centres.size());
+  CentreNeighbors neighbors;
+  neighbors.width = std::min(num_centres, kSidesGrowthNeighbors + 1);
+  neighbors.nearest.resize(static_cast<size_t>(num_centres) * neighbors.width);
+  const energy::NearestNeighbors centre_search(regions.centres);
+  centre_search.ForEach(num_centres, neighbors.width, num_threads,
+                        [&](int c) { return regions.centres[c]; },
                         [&](int c, const int* nearest, const double*, int found) {
                           std::copy_n(nearest, found,
-                                      adjacent.data() + static_cast<size_t>(c) * neighbors);
+                                      neighbors.nearest.data() +
+                                          static_cast<size_t>(c) * neighbors.width);
                         });
+  return neighbors;
+}
+
+// The growable regions connected to a merged one through growable regions among each other's
+// nearest centres, merged too.
+void GrowMergedRegions(const CentreNeighbors& neighbors, SideRegions* regions) {
+  const int num_centres = static_cast<int>(regions->centres.size());
   std::vector<int> front;
   for (int c = 0; c < num_centres; ++c) {
     if (regions->merged[c]) front.push_back(c);
@@ -126,12 +154,58 @@ void GrowMergedRegions(int num_threads, SideRegions* regions) {
   while (!front.empty()) {
     const int c = front.back();
     front.pop_back();
-    for (int a = 0; a < neighbors; ++a) {
-      const int d = adjacent[static_cast<size_t>(c) * neighbors + a];
+    for (int a = 0; a < neighbors.width; ++a) {
+      const int d = neighbors.Of(c)[a];
       if (regions->merged[d] || !regions->growable[d]) continue;
       regions->merged[d] = 1;
       front.push_back(d);
     }
+  }
+}
+
+// The counted regions with kSidesFillNeighbors or more merged regions among their nearest
+// centres, merged too with those neighbours' mean sides, round after round (each round from
+// the last one's marks) until none joins. A later round tests only the regions one of whose
+// nearest centres joined in the last, so the rounds cost what joins.
+void FillMergedHoles(const CentreNeighbors& neighbors, SideRegions* regions) {
+  const int num_centres = static_cast<int>(regions->centres.size());
+  // The regions among whose nearest centres each one is.
+  std::vector<std::vector<int>> nearest_to(num_centres);
+  for (int c = 0; c < num_centres; ++c) {
+    for (int a = 0; a < neighbors.width; ++a) nearest_to[neighbors.Of(c)[a]].push_back(c);
+  }
+  std::vector<int> tested(num_centres);
+  std::iota(tested.begin(), tested.end(), 0);
+  std::vector<std::pair<int, TwoSides>> joining;
+  std::vector<uint8_t> marked(num_centres, 0);
+  while (!tested.empty()) {
+    joining.clear();
+    for (const int c : tested) {
+      if (regions->merged[c] || !regions->counted[c]) continue;
+      int merged = 0;
+      TwoSides mean;
+      for (int a = 0; a < neighbors.width; ++a) {
+        const int d = neighbors.Of(c)[a];
+        if (d == c || !regions->merged[d]) continue;
+        ++merged;
+        mean.half_gap += regions->sides[d].half_gap;
+        mean.sigma_squared += regions->sides[d].sigma_squared;
+      }
+      if (merged < kSidesFillNeighbors) continue;
+      mean.half_gap /= merged;
+      mean.sigma_squared /= merged;
+      joining.emplace_back(c, mean);
+    }
+    tested.clear();
+    for (const auto& [c, sides] : joining) {
+      regions->merged[c] = 1;
+      regions->sides[c] = sides;
+      for (const int d : nearest_to[c]) {
+        if (!marked[d]) tested.push_back(d);
+        marked[d] = 1;
+      }
+    }
+    for (const int c : tested) marked[c] = 0;
   }
 }
 
@@ -140,7 +214,7 @@ void GrowMergedRegions(int num_threads, SideRegions* regions) {
 bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads) {
   size_t num_regions = 0, num_seeds = 0;
   for (const SideRegions* regions : parts) {
-    num_regions += regions->seed.size();
+    num_regions += std::count(regions->counted.begin(), regions->counted.end(), 1);
     num_seeds += std::count(regions->seed.begin(), regions->seed.end(), 1);
   }
   double m2 = 0.0, m4 = 0.0, count = 0.0;
@@ -162,7 +236,10 @@ bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads) 
     regions->merged.assign(regions->seed.size(), 0);
     if (!merged) continue;
     regions->merged = regions->seed;
-    if (grow) GrowMergedRegions(num_threads, regions);
+    if (!grow || regions->centres.empty()) continue;
+    const CentreNeighbors neighbors = NearestCentres(*regions, num_threads);
+    GrowMergedRegions(neighbors, regions);
+    FillMergedHoles(neighbors, regions);
   }
   return merged;
 }
@@ -319,7 +396,8 @@ MeasuredPart MeasurePart(const SidesPart& part, int num_threads) {
   return measured;
 }
 
-// Each anchor of a merged region moved to the side its offset's sign picks.
+// Each anchor of a merged region moved to the side its offset's sign picks, but for those that
+// see another layer in a region read without them.
 energy::PointList MoveToSides(const SidesPart& part, const MeasuredPart& measured,
                               int num_threads, int* moved) {
   energy::PointList result = part.outputs;
@@ -328,6 +406,7 @@ energy::PointList MoveToSides(const SidesPart& part, const MeasuredPart& measure
   for (size_t r = 0; r < region_of.size(); ++r) {
     if (region_of[r] < 0) continue;
     const int i = measured.anchors[r];
+    if (measured.regions.unsplit_only[region_of[r]] && measured.other_layer[i]) continue;
     const double half_gap = measured.regions.sides[region_of[r]].half_gap;
     const double side = measured.offset[i] >= 0.0 ? half_gap : -half_gap;
     result[i] = measured.reference[i] + side * part.normals[i];

@@ -77,6 +77,16 @@ constexpr double kMinGrowthSeedShare = 0.15;
 // not tell them apart as well (docs/method.md, "A cloud read as merged as a whole").
 constexpr double kMinSeedChanceMultiple = 2.0;
 constexpr double kPooledKurtosisStandardErrors = 3.0;
+// Neighbouring regions share most of their points, so a noise draw that reads high over a
+// patch of a merged part reads so in a cluster of regions: on the benchmark's plate_t0.03 at
+// 10K points and 3% (sides 1.4 deviations apart), 10 neighbouring regions of 104 read
+// 2.94-3.07 inside 94 merged ones, and their points stayed on the mid-plane (9.9% of the
+// outputs, 82% of the squared error). So where the merged regions grow, a region not merged
+// joins them where kSidesFillNeighbors or more of its kSidesGrowthNeighbors nearest centres
+// are merged, round after round until none joins, with its merged neighbours' mean sides
+// (docs/method.md, "Holes in the merged regions"). Along a straight border between merged
+// regions and others, about half of a region's nearest centres are merged, and it stays.
+constexpr int kSidesFillNeighbors = 4;
 
 // The kurtosis under which a region of `region_points` offsets counts as two sides.
 double MaxMergedKurtosis(int region_points);
@@ -106,6 +116,11 @@ struct SideRegions {
   std::vector<uint8_t> seed;              // under MaxMergedKurtosis
   std::vector<uint8_t> merged;            // set by MarkMergedRegions
   std::vector<double> median_abs_offset;  // of the region's offsets
+  // Read over its points that see no other layer only (a split region, below); those points
+  // alone move.
+  std::vector<uint8_t> unsplit_only;
+  // Counts in the seed shares: every region but a split one with too few such points.
+  std::vector<uint8_t> counted;
   // The sums of z^2 and z^4 over every point's offset z, and their count, leaving out the
   // points that see another layer (`split` of MeasureSideRegions).
   double pooled_m2_sum = 0.0;
@@ -122,7 +137,13 @@ struct SideRegions {
 // merged yet. Empty where fewer than kSidesRegionPoints positions are given.
 // `split` (optional, per position): the point's output sees another output layer beyond the
 // reference's band (SidesReference). A region where kSidesSplitRegionShare or more of its
-// points do is neither a seed nor growable: its sides are split already (below).
+// points do has its sides split already (below), but the graph can leave patches of a thin
+// part merged beside its split layers: at the corners and rims of sheets 2.8 noise
+// deviations apart at 10K points and 2%, 6.7% of the outputs on the mid-plane, 64% of the
+// squared error (docs/method.md, "Merged patches beside split layers"). Such a region is
+// read over the points that see no other layer, with the bars of their count, where
+// kMinUnsplitRegionPoints or more remain; with fewer it is neither a seed nor growable and
+// does not count in the seed shares.
 SideRegions MeasureSideRegions(const energy::PointList& positions,
                                const std::vector<double>& offsets, const std::vector<int>& pool,
                                int num_threads, const std::vector<uint8_t>* split = nullptr);
@@ -137,7 +158,8 @@ SideRegions MeasureSideRegions(const energy::PointList& positions,
 // are merged, and where kMinGrowthSeedShare or more are seeds or the cloud reads as merged as
 // a whole, so are the growable regions connected to a seed through growable regions among
 // each other's kSidesGrowthNeighbors nearest centres (of the same part), whatever the order
-// of the centres.
+// of the centres, and then the holes among them (kSidesFillNeighbors). The shares count the
+// `counted` regions only.
 bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads);
 
 // Whether the probe reads each side's noise of merged sides (neighborhood_size.h):
@@ -185,6 +207,9 @@ constexpr double kSidesReferenceBandDeviations = 2.0;
 // it (docs/method.md, "Sides split already").
 constexpr double kSidesOtherLayerShare = 0.25;
 constexpr double kSidesSplitRegionShare = 0.5;
+// Over 200 points a kurtosis reads with a standard error of 0.35, and the seed bar is 2.31
+// (1,500 points: 0.13 and 2.75); 100 or 400 moved the sheets above by under 1%.
+constexpr int kMinUnsplitRegionPoints = 200;
 // Where the points are dense, the searched neighbours span less than the gap of sides split
 // cleanly: at 50K points, two sheets 5.9 deviations apart are out of each other's reach, the
 // offsets from each sheet, cut off at the mid-plane, read under the seed bar in enough
@@ -234,7 +259,8 @@ struct SidesPart {
 
 // Each part's outputs with each movable point of a merged region (MarkMergedRegions over the
 // parts' regions) moved along its normal to its reference (SidesReference, with the band
-// above, from the part's own outputs) + sign(z) a (above). A part with fewer than
+// above, from the part's own outputs) + sign(z) a (above), but for the points of a region
+// read over its unsplit points that see another layer. A part with fewer than
 // kSidesRegionPoints movable points with a normal has no regions and stays. `moved`
 // (optional): how many points moved. Deterministic for any thread count.
 std::vector<energy::PointList> SeparateMergedSides(const std::vector<SidesPart>& parts,
