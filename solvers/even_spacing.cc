@@ -20,7 +20,7 @@ constexpr double kMinNormalCosine = 0.866;
 
 energy::PointList SpreadEvenly(const energy::PointList& points, const energy::PointList& normals,
                                const std::vector<uint8_t>& movable, int rounds,
-                               int num_threads) {
+                               int num_threads, double* kernel) {
   std::vector<int> rows;  // the movable points
   for (size_t i = 0; i < points.size(); ++i) {
     if (movable[i]) rows.push_back(static_cast<int>(i));
@@ -30,12 +30,12 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
   if (rounds <= 0 || count <= kNeighbors) return result;
   energy::PointList current(count);
   for (int r = 0; r < count; ++r) current[r] = points[rows[r]];
-  double h = 0.0;
+  double h = kernel && *kernel > 0.0 ? *kernel : 0.0;
   energy::PointList next(count);
   for (int round = 0; round < rounds; ++round) {
     const energy::NearestNeighbors search(current);
     auto query = [&current](int r) { return current[r]; };
-    if (round == 0) {
+    if (!(h > 0.0)) {
       std::vector<double> nearest(count, 0.0);
       search.ForEach(count, 2, num_threads, query,
                      [&](int r, const int*, const double* squared, int found) {
@@ -43,6 +43,7 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
                      });
       h = 2.0 * Median(&nearest);
       if (!(h > 0.0)) return result;
+      if (kernel) *kernel = h;
     }
     search.ForEach(count, kNeighbors + 1, num_threads, query,
                    [&](int r, const int* nearest, const double* squared, int found) {

@@ -30,10 +30,11 @@ namespace lpd::solvers {
 
 // `points` after `rounds` rounds of the repulsion above. Only the points with movable[i] move
 // and push (the others, such as outliers, are left out); `normals` are unit normals, and a
-// point with a zero normal stays. Deterministic for any thread count.
+// point with a zero normal stays. `kernel` (optional): h where it holds a value over 0, else
+// h is measured as above and written to it. Deterministic for any thread count.
 energy::PointList SpreadEvenly(const energy::PointList& points, const energy::PointList& normals,
                                const std::vector<uint8_t>& movable, int rounds,
-                               int num_threads);
+                               int num_threads, double* kernel = nullptr);
 
 }  // namespace lpd::solvers
 

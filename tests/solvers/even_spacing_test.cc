@@ -68,6 +68,32 @@ TEST(EvenSpacing, EachPointMovesAtMostFourTenthsOfTheKernelPerRound) {
   }
 }
 
+// The kernel measured is written back; a kernel given is used instead (a quarter of it: moves
+// of at most a quarter as far).
+TEST(EvenSpacing, TheKernelMeasuredIsWrittenBackAndAKernelGivenIsUsed) {
+  const energy::PointList points = RandomSquare(501, 13);
+  const energy::PointList normals(points.size(), energy::Point3(0, 0, 1));
+  const std::vector<uint8_t> movable(points.size(), 1);
+  std::vector<double> nearest = NearestDistances(points);
+  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
+  const double h = 2.0 * nearest[nearest.size() / 2];
+  double measured = 0.0;
+  const energy::PointList spread = SpreadEvenly(points, normals, movable, 3, 2, &measured);
+  EXPECT_DOUBLE_EQ(measured, h);
+  double given = h;
+  EXPECT_EQ(SpreadEvenly(points, normals, movable, 3, 2, &given), spread);
+  EXPECT_EQ(given, h);
+  given = 0.25 * h;
+  const energy::PointList shorter = SpreadEvenly(points, normals, movable, 3, 2, &given);
+  double farthest = 0.0, farthest_before = 0.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    farthest = std::max(farthest, (shorter[i] - points[i]).norm());
+    farthest_before = std::max(farthest_before, (spread[i] - points[i]).norm());
+  }
+  EXPECT_LE(farthest, 3 * 0.4 * 0.25 * h * (1 + 1e-12));
+  EXPECT_GT(farthest_before, 3 * 0.4 * 0.25 * h);
+}
+
 // The unit square in z = 0 (normal z) and a second face at x = 1 perpendicular to it
 // (normal x), `count` random points each.
 void RandomSquareAndWall(int count, energy::PointList* points, energy::PointList* normals) {
