@@ -99,16 +99,16 @@ struct SidesInput {
 // The points the between-layers step moved are spread again where they are at least this
 // share of the solved points: on the benchmark's thin parts it moved 67-99% of them (the
 // layers' heights corrected everywhere), and spread, their P2M went down by up to 0.08 x
-// 1e-4; where it moved 2-19% (JOINT 0.03 of Table 1, meshes at 3%, thin parts at 50K 2-3%)
-// the moved points lie scattered, and spread, those clouds came out the same or up to 0.004
-// higher (docs/method.md, "The layers' points spread again").
+// 1e-4; where it moved 2-19% (JOINT 0.03 and FANDISK 0.03 of Table 1, plate_t0.06 50K 3%,
+// sheets_gap0.04 50K 2%) the moved points lie scattered, and spread, those clouds came out
+// the same or up to 0.004 higher (docs/method.md, "The layers' points spread again").
 constexpr double kMinLayeredShareToSpread = 0.5;
 
 // SeparateMergedSides over all `sets` at once, then, with `read_layers`,
 // MoveBetweenLayerPointsOntoLayers in each (points between the layers moved with
 // `move_between`), the flagged outliers standing; returns how many points moved, and flags in
-// `split` the points of the first set that SeparateMergedSides moved, in `layered` the others
-// of that set that MoveBetweenLayerPointsOntoLayers moved.
+// `split` the points of the first set that SeparateMergedSides moved, in `layered_only` the
+// others of that set that MoveBetweenLayerPointsOntoLayers moved.
 int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& sets,
                   bool read_layers, bool move_between, int num_threads,
                   std::vector<uint8_t>* split, std::vector<uint8_t>* layered_only) {
