@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+#include "solvers/median.h"
+
 namespace lpd::solvers {
 namespace {
 
@@ -27,6 +29,12 @@ std::vector<double> NearestDistances(const energy::PointList& points) {
     }
   }
   return nearest;
+}
+
+// SpreadEvenly's kernel: twice the median of the nearest distances found by brute force.
+double KernelByBruteForce(const energy::PointList& points) {
+  std::vector<double> nearest = NearestDistances(points);
+  return 2.0 * Median(&nearest);
 }
 
 double CoefficientOfVariation(const std::vector<double>& values) {
@@ -59,9 +67,7 @@ TEST(EvenSpacing, EachPointMovesAtMostFourTenthsOfTheKernelPerRound) {
   const energy::PointList points = RandomSquare(500, 5);
   const energy::PointList normals(points.size(), energy::Point3(0, 0, 1));
   const std::vector<uint8_t> movable(points.size(), 1);
-  std::vector<double> nearest = NearestDistances(points);
-  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
-  const double h = 2.0 * nearest[nearest.size() / 2];
+  const double h = KernelByBruteForce(points);
   const energy::PointList spread = SpreadEvenly(points, normals, movable, 3, 1);
   for (size_t i = 0; i < points.size(); ++i) {
     EXPECT_LE((spread[i] - points[i]).norm(), 3 * 0.4 * h * (1 + 1e-12));
@@ -74,9 +80,7 @@ TEST(EvenSpacing, TheKernelMeasuredIsWrittenBackAndAKernelGivenIsUsed) {
   const energy::PointList points = RandomSquare(501, 13);
   const energy::PointList normals(points.size(), energy::Point3(0, 0, 1));
   const std::vector<uint8_t> movable(points.size(), 1);
-  std::vector<double> nearest = NearestDistances(points);
-  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
-  const double h = 2.0 * nearest[nearest.size() / 2];
+  const double h = KernelByBruteForce(points);
   double measured = 0.0;
   const energy::PointList spread = SpreadEvenly(points, normals, movable, 3, 2, &measured);
   EXPECT_DOUBLE_EQ(measured, h);

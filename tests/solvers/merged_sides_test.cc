@@ -140,34 +140,52 @@ TEST(SeparateMergedSides, OneGaussianSheetStaysAlsoWithItsFarthestPointsFlagged)
   }
 }
 
-TEST(MeasureSideRegions, EachRegionIsItsCentresNearestPointsByBruteForce) {
-  // Scattered positions (no ties in distance), offsets of sides 2 sigma apart.
-  std::mt19937_64 random(5);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const Merged m = MergedSheet(0.002, 0.002, 5);
+// MergedSheet's offsets (sides 2 sigma apart) at scattered positions in the unit square (no
+// ties in distance), every point in the pool.
+struct Scattered {
   energy::PointList positions;
   std::vector<double> offsets;
   std::vector<int> pool;
+};
+
+Scattered ScatteredOffsets(uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Merged m = MergedSheet(0.002, 0.002, seed);
+  Scattered scattered;
   for (size_t i = 0; i < m.inputs.size(); ++i) {
-    positions.emplace_back(unit(random), unit(random), 0.0);
-    offsets.push_back(m.inputs[i].z());
-    pool.push_back(static_cast<int>(i));
+    scattered.positions.emplace_back(unit(random), unit(random), 0.0);
+    scattered.offsets.push_back(m.inputs[i].z());
+    scattered.pool.push_back(static_cast<int>(i));
   }
+  return scattered;
+}
+
+// The kSidesRegionPoints positions nearest to `centre`, nearest first, by brute force.
+std::vector<int> RegionByBruteForce(const energy::PointList& positions,
+                                    const energy::Point3& centre) {
+  std::vector<std::pair<double, int>> by_distance;
+  for (size_t i = 0; i < positions.size(); ++i) {
+    by_distance.emplace_back((positions[i] - centre).squaredNorm(), static_cast<int>(i));
+  }
+  std::sort(by_distance.begin(), by_distance.end());
+  std::vector<int> region;
+  for (int j = 0; j < kSidesRegionPoints; ++j) region.push_back(by_distance[j].second);
+  return region;
+}
+
+TEST(MeasureSideRegions, EachRegionIsItsCentresNearestPointsByBruteForce) {
+  const auto [positions, offsets, pool] = ScatteredOffsets(5);
   SideRegions regions = MeasureSideRegions(positions, offsets, pool, 2);
   ASSERT_EQ(regions.centres.size(), (pool.size() + kSidesRegionCentreStride - 1) /
                                         kSidesRegionCentreStride);
   for (size_t c = 0; c < regions.centres.size(); c += 7) {
     const energy::Point3 centre = positions[pool[c * kSidesRegionCentreStride]];
     EXPECT_EQ(regions.centres[c], centre);
-    std::vector<std::pair<double, int>> by_distance;
-    for (size_t i = 0; i < positions.size(); ++i) {
-      by_distance.emplace_back((positions[i] - centre).squaredNorm(), static_cast<int>(i));
-    }
-    std::sort(by_distance.begin(), by_distance.end());
     double m2 = 0.0, m4 = 0.0;
     std::vector<double> magnitudes;
-    for (int j = 0; j < kSidesRegionPoints; ++j) {
-      const double z = offsets[by_distance[j].second];
+    for (const int i : RegionByBruteForce(positions, centre)) {
+      const double z = offsets[i];
       m2 += z * z / kSidesRegionPoints;
       m4 += z * z * z * z / kSidesRegionPoints;
       magnitudes.push_back(std::abs(z));
@@ -192,32 +210,19 @@ TEST(MeasureSideRegions, EachRegionIsItsCentresNearestPointsByBruteForce) {
 // Where half a region's points or more see another layer, it is read over the others only,
 // with the bars of their count, and counts where kMinUnsplitRegionPoints or more remain.
 TEST(MeasureSideRegions, ASplitRegionIsReadOverItsOtherPointsByBruteForce) {
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const Merged m = MergedSheet(0.002, 0.002, 7);
-  energy::PointList positions;
-  std::vector<double> offsets;
-  std::vector<int> pool;
+  const auto [positions, offsets, pool] = ScatteredOffsets(7);
   std::vector<uint8_t> split;
-  for (size_t i = 0; i < m.inputs.size(); ++i) {
-    positions.emplace_back(unit(random), unit(random), 0.0);
-    offsets.push_back(m.inputs[i].z());
-    pool.push_back(static_cast<int>(i));
+  for (size_t i = 0; i < positions.size(); ++i) {
     // Left: all but every 12th point see another layer; middle: all but every 4th; right: none.
-    const double x = positions.back().x();
+    const double x = positions[i].x();
     split.push_back(x < 0.35 ? i % 12 != 0 : (x < 0.7 ? i % 4 != 0 : 0));
   }
   SideRegions regions = MeasureSideRegions(positions, offsets, pool, 2, &split);
   int uncounted = 0, unsplit_only = 0, whole = 0;
   for (size_t c = 0; c < regions.centres.size(); ++c) {
-    const energy::Point3 centre = regions.centres[c];
-    std::vector<std::pair<double, int>> by_distance;
-    for (size_t i = 0; i < positions.size(); ++i) {
-      by_distance.emplace_back((positions[i] - centre).squaredNorm(), static_cast<int>(i));
-    }
-    std::sort(by_distance.begin(), by_distance.end());
+    const std::vector<int> region = RegionByBruteForce(positions, regions.centres[c]);
     int split_points = 0;
-    for (int j = 0; j < kSidesRegionPoints; ++j) split_points += split[by_distance[j].second];
+    for (const int i : region) split_points += split[i];
     const bool split_region = split_points >= kSidesSplitRegionShare * kSidesRegionPoints;
     const int used = split_region ? kSidesRegionPoints - split_points : kSidesRegionPoints;
     ASSERT_EQ(regions.unsplit_only[c] != 0, split_region) << "region " << c;
@@ -229,9 +234,9 @@ TEST(MeasureSideRegions, ASplitRegionIsReadOverItsOtherPointsByBruteForce) {
     }
     (split_region ? unsplit_only : whole) += 1;
     double m2 = 0.0, m4 = 0.0;
-    for (int j = 0; j < kSidesRegionPoints; ++j) {
-      if (split_region && split[by_distance[j].second]) continue;
-      const double z = offsets[by_distance[j].second];
+    for (const int i : region) {
+      if (split_region && split[i]) continue;
+      const double z = offsets[i];
       m2 += z * z / used;
       m4 += z * z * z * z / used;
     }
