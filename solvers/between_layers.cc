@@ -59,8 +59,15 @@ struct Layers {
   double scale = 1.0;
   HeightField height[2] = {HeightField::Zero(), HeightField::Zero()};  // lower, upper run
   double spread[2] = {0.0, 0.0};  // robust deviations about the heights
-  // How far each run's outputs move to the inputs' layer (flat layers; 0 where the mixture
-  // does not read as two layers of noise).
+  // The two-layer mixture fitted to the inputs (flat layers), where its means lie
+  // kMinMixtureSeparation of its deviations apart (mixture_apart): its deviation, and each
+  // run's move to the mixture's mean and that mean's variance.
+  bool mixture_apart = false;
+  double mixture_deviation = 0.0;
+  double mixture_move[2] = {0.0, 0.0};
+  double mixture_variance[2] = {0.0, 0.0};
+  // How far each run's outputs move to the inputs' layer (0 where the mixture does not read as
+  // two layers of noise; SetLayerCorrections).
   double correction[2] = {0.0, 0.0};
   double gap = 0.0;
   // The in-plane distance of the read outputs' centroid from the centre, over the farthest
@@ -161,14 +168,12 @@ void ReadCurvature(const std::vector<energy::Point3>& local, const std::vector<d
   }
 }
 
-// The moves of flat layers' outputs onto the heights of their inputs' layers
-// (between_layers.h): the two-layer mixture fitted to the inputs of the outputs
-// `across[0, found)` (distance across the normal, output index), where it reads as two layers
-// of noise, each mean's move d from its run's median shrunk to
-// d^3 / (d^2 + (kMixtureMoveStandardErrors se)^2).
-void CorrectLayerHeights(const energy::PointList& inputs,
-                         const std::vector<std::pair<double, int>>& across, int found,
-                         double deviation, Layers* layers) {
+// The two-layer mixture fitted to the inputs of the outputs `across[0, found)` (distance
+// across the normal, output index) of flat layers, where its means lie apart
+// (between_layers.h).
+void FitInputLayers(const energy::PointList& inputs,
+                    const std::vector<std::pair<double, int>>& across, int found,
+                    double deviation, Layers* layers) {
   thread_local std::vector<double> input_heights;
   input_heights.resize(found);
   for (int b = 0; b < found; ++b) {
@@ -177,15 +182,42 @@ void CorrectLayerHeights(const energy::PointList& inputs,
   const double median[2] = {layers->height[0](0), layers->height[1](0)};
   TwoLayerMixture fit;
   if (!FitTwoLayerMixture(input_heights, median[0], median[1], deviation, &fit)) return;
-  if (!(fit.mean[1] - fit.mean[0] > kMinMixtureSeparation * fit.deviation &&
-        fit.deviation < kMaxMixtureDeviationRatio * deviation)) {
-    return;
-  }
+  if (!(fit.mean[1] - fit.mean[0] > kMinMixtureSeparation * fit.deviation)) return;
+  layers->mixture_apart = true;
+  layers->mixture_deviation = fit.deviation;
   for (int run = 0; run < 2; ++run) {
-    const double move = fit.mean[run] - median[run];
-    const double uncertainty =
-        kMixtureMoveStandardErrors * kMixtureMoveStandardErrors * fit.mean_variance[run];
-    layers->correction[run] = move * move * move / (move * move + uncertainty);
+    layers->mixture_move[run] = fit.mean[run] - median[run];
+    layers->mixture_variance[run] = fit.mean_variance[run];
+  }
+}
+
+// The corrections of the layers of the centres `read` (between_layers.h): each run of a
+// mixture that reads as two layers of noise moves by d = the mixture's mean less the run's
+// median, shrunk to d^3 / (d^2 + (kMixtureMoveStandardErrors se)^2). A mixture apart reads so
+// where its deviation is under kMaxMixtureDeviationRatio times the median of the mixtures'
+// deviations, where kMinMixtureShare of the centres read mixtures apart, else times the
+// inputs' offsets' `deviation`.
+void SetLayerCorrections(const std::vector<int>& read, double deviation,
+                         std::vector<Layers>* layers) {
+  std::vector<double> deviations;
+  for (int c : read) {
+    if ((*layers)[c].mixture_apart) deviations.push_back((*layers)[c].mixture_deviation);
+  }
+  const double reference = deviations.size() >= kMinMixtureShare * read.size()
+                               ? Median(&deviations)
+                               : deviation;
+  for (int c : read) {
+    Layers& l = (*layers)[c];
+    for (int run = 0; run < 2; ++run) {
+      l.correction[run] = 0.0;
+      if (!(l.mixture_apart && l.mixture_deviation < kMaxMixtureDeviationRatio * reference)) {
+        continue;
+      }
+      const double move = l.mixture_move[run];
+      const double uncertainty =
+          kMixtureMoveStandardErrors * kMixtureMoveStandardErrors * l.mixture_variance[run];
+      l.correction[run] = move * move * move / (move * move + uncertainty);
+    }
   }
 }
 
@@ -253,7 +285,7 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   layers.height[0](0) = median[0];
   layers.height[1](0) = median[1];
   ReadCurvature(local, heights, threshold, across[found - 1].first, &layers);
-  if (!layers.curved) CorrectLayerHeights(inputs, across, found, deviation, &layers);
+  if (!layers.curved) FitInputLayers(inputs, across, found, deviation, &layers);
   layers.found = true;
   return layers;
 }
@@ -362,6 +394,7 @@ energy::PointList MoveBetweenLayerPointsOntoLayers(const energy::PointList& inpu
                            layers[c] = ReadLayers(inputs, before, candidates, normal[c],
                                                   centre_points[c], deviation);
                          });
+    SetLayerCorrections(read, deviation, &layers);
     // Below the read ratio, the points between layers clearly apart, where enough centres
     // read such layers (between_layers.h).
     const int clear_centres = static_cast<int>(std::count_if(

@@ -264,6 +264,22 @@ TEST(MoveBetweenLayerPointsOntoLayers, ARodsFlanksStayAndPointsNearItsAxisMoveOu
   EXPECT_LT(axis_after, 0.5 * axis_before) << "the points near the axis did not move out";
 }
 
+// The mean distance of the outputs of `result` from the mid-plane between m's layers (on
+// whichever layer they lie), away from the grid's rim.
+double MeanOutwardHeight(const Layered& m, const energy::PointList& result) {
+  double outward = 0.0;
+  int count = 0;
+  for (size_t i = 0; i < result.size(); ++i) {
+    if (std::min(m.outputs[i].x(), m.outputs[i].y()) < 0.1 ||
+        std::max(m.outputs[i].x(), m.outputs[i].y()) > 0.5) {
+      continue;
+    }
+    outward += std::abs(result[i].z());
+    ++count;
+  }
+  return outward / count;
+}
+
 // Two layers 2.8 noise deviations apart whose outputs the solve pulled 0.15 deviations toward
 // each other (each output keeping a third of its noise): the mixture fitted to the inputs
 // moves them back out, with or without the points between moved. Where the outputs' layers
@@ -282,22 +298,29 @@ TEST(MoveBetweenLayerPointsOntoLayers, LayersPulledTogetherMoveBackOut) {
       const std::vector<uint8_t> movable(m.outputs.size(), 1);
       const energy::PointList result = MoveBetweenLayerPointsOntoLayers(
           m.inputs, m.outputs, m.normals, movable, move_between, 2);
-      // The mean height over each output's own side, away from the grid's rim.
-      double outward = 0.0;
-      int count = 0;
-      for (size_t i = 0; i < result.size(); ++i) {
-        if (std::min(m.outputs[i].x(), m.outputs[i].y()) < 0.1 ||
-            std::max(m.outputs[i].x(), m.outputs[i].y()) > 0.5) {
-          continue;
-        }
-        outward += (m.side[i] > 0.0 ? 1.0 : -1.0) * result[i].z();
-        ++count;
-      }
       // Shrunk by the mixture's standard error, the moves take back 70% of the pull.
-      EXPECT_NEAR(outward / count, half_gap, pulled > 0.0 ? 0.5 * pulled : 0.03 * sigma)
+      EXPECT_NEAR(MeanOutwardHeight(m, result), half_gap,
+                  pulled > 0.0 ? 0.5 * pulled : 0.03 * sigma)
           << "pulled in by " << pulled / sigma << " sigma, move_between " << move_between;
     }
   }
+}
+
+// The same layers pulled in, where each output keeps 45% of its own input's noise: the
+// inputs' offsets from their outputs read about 0.55 noise deviations, and the mixtures' 1.8
+// times that. Every centre reads a mixture whose means lie apart, so the mixtures are held
+// to their own median deviation, not to the offsets', and the layers move back out.
+TEST(MoveBetweenLayerPointsOntoLayers, OutputsKeepingTheirNoiseMoveOutWhereMostCentresReadLayers) {
+  const double sigma = 0.01, half_gap = 1.4 * sigma, pulled = 0.15 * sigma;
+  Layered m = TwoLayers(half_gap, sigma, 13);
+  for (size_t i = 0; i < m.outputs.size(); ++i) {
+    const double noise = m.inputs[i].z() - m.side[i];
+    m.outputs[i].z() = (m.side[i] > 0.0 ? 1.0 : -1.0) * (half_gap - pulled) + 0.45 * noise;
+  }
+  const std::vector<uint8_t> movable(m.outputs.size(), 1);
+  const energy::PointList result =
+      MoveBetweenLayerPointsOntoLayers(m.inputs, m.outputs, m.normals, movable, false, 2);
+  EXPECT_NEAR(MeanOutwardHeight(m, result), half_gap, 0.5 * pulled);
 }
 
 // Without move_between, the points between two layers stay between them.
