@@ -6,6 +6,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "energy/even_key_sort.h"
+
 namespace lpd::energy {
 namespace {
 
@@ -124,7 +126,7 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   offsets.resize(count);
   for (int a = 0; a < count; ++a) offsets[a] = split.Offset(local[a]);
   sorted = offsets;
-  std::sort(sorted.begin(), sorted.end());
+  SortByEvenKeys(sorted.data(), sorted.size(), [](double o) { return o; }, std::less<double>());
   const TwoRuns runs = BestTwoRuns(sorted, kMinSheetPoints);
   const int best_size = runs.lower_size;
   const double best = runs.within;

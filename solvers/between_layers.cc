@@ -249,7 +249,9 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   }
   const int found = std::min(static_cast<int>(across.size()), kLayerNeighbors);
   if (found == 0) return layers;
-  energy::PlaceSmallestFirst(&across, found);  // the `found` nearest, in order
+  // the `found` nearest, in order
+  energy::PlaceSmallestFirst(&across, found,
+                             [](const std::pair<double, int>& a) { return a.first; });
   thread_local std::vector<energy::Point3> local;
   thread_local std::vector<double> heights, sorted;
   local.resize(found);
@@ -262,7 +264,8 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   }
   layers.asymmetry = in_plane_sum.norm() / found / std::sqrt(across[found - 1].first);
   sorted = heights;
-  std::sort(sorted.begin(), sorted.end());
+  energy::SortByEvenKeys(sorted.data(), sorted.size(), [](double h) { return h; },
+                         std::less<double>());
   const int min_run = std::max(1, static_cast<int>(std::ceil(kMinLayerShare * found)));
   const energy::TwoRuns runs = energy::BestTwoRuns(sorted, min_run);
   const int lower_size = runs.lower_size;

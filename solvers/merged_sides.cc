@@ -292,7 +292,9 @@ energy::PointList SidesReference(const energy::PointList& outputs,
                    const size_t used =
                        std::min(candidates.size(), static_cast<size_t>(kSidesReferenceNeighbors));
                    // the nearest, in order, for the same sum
-                   energy::PlaceSmallestFirst(&candidates, used);
+                   energy::PlaceSmallestFirst(
+                       &candidates, used,
+                       [](const std::pair<double, double>& c) { return c.first; });
                    double sum = 0.0;
                    for (size_t b = 0; b < used; ++b) sum += candidates[b].second;
                    if (used > 0) reference[i] = outputs[i] + (sum / used) * n;

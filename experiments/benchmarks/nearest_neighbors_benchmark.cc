@@ -61,9 +61,9 @@ void BM_NearestNeighborsForEach(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * points.size());
 }
 
-BENCHMARK(BM_NanoflannSearch)->Arg(20)->Arg(64)->Arg(131)->Arg(261)->Arg(400)
+BENCHMARK(BM_NanoflannSearch)->Arg(20)->Arg(32)->Arg(48)->Arg(64)->Arg(131)->Arg(261)->Arg(400)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_NearestNeighborsForEach)->Arg(20)->Arg(64)->Arg(131)->Arg(261)->Arg(400)
+BENCHMARK(BM_NearestNeighborsForEach)->Arg(20)->Arg(32)->Arg(48)->Arg(64)->Arg(131)->Arg(261)->Arg(400)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -20,7 +20,7 @@ TEST(PlaceSmallestFirst, PutsTheCountSmallestInOrderAheadOfTheRest) {
     std::vector<std::pair<int, int>> sorted = values;
     std::sort(sorted.begin(), sorted.end());
     std::vector<std::pair<int, int>> placed = values;
-    PlaceSmallestFirst(&placed, count);
+    PlaceSmallestFirst(&placed, count, [](const std::pair<int, int>& v) { return v.first; });
     EXPECT_TRUE(std::equal(sorted.begin(), sorted.begin() + count, placed.begin()));
     std::sort(placed.begin(), placed.end());
     EXPECT_EQ(placed, sorted);  // nothing lost or repeated
@@ -29,7 +29,7 @@ TEST(PlaceSmallestFirst, PutsTheCountSmallestInOrderAheadOfTheRest) {
 
 TEST(PlaceSmallestFirst, FollowsTheComparator) {
   std::vector<int> values = {4, 9, 1, 7, 3, 8};
-  PlaceSmallestFirst(&values, 3, [](int a, int b) { return a > b; });
+  PlaceSmallestFirst(&values, 3, [](int v) { return -v; }, [](int a, int b) { return a > b; });
   EXPECT_EQ(std::vector<int>(values.begin(), values.begin() + 3), (std::vector<int>{9, 8, 7}));
 }
 
