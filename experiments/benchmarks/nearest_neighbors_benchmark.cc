@@ -61,10 +61,12 @@ void BM_NearestNeighborsForEach(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * points.size());
 }
 
-BENCHMARK(BM_NanoflannSearch)->Arg(20)->Arg(32)->Arg(48)->Arg(64)->Arg(131)->Arg(261)->Arg(400)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_NearestNeighborsForEach)->Arg(20)->Arg(32)->Arg(48)->Arg(64)->Arg(131)->Arg(261)->Arg(400)
-    ->Unit(benchmark::kMillisecond);
+void NeighborCounts(benchmark::internal::Benchmark* benchmark) {
+  for (int k : {20, 32, 48, 64, 131, 261, 400}) benchmark->Arg(k);
+}
+
+BENCHMARK(BM_NanoflannSearch)->Apply(NeighborCounts)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_NearestNeighborsForEach)->Apply(NeighborCounts)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace lpd::energy
