@@ -70,6 +70,11 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
   }
   std::printf("median per iteration: local %.3f s, global %.3f s, whole %.3f s\n",
               Median(local), Median(global), Median(whole));
+  std::printf("stages (s):");
+  for (const auto& [stage, seconds] : result.stage_times.stages()) {
+    std::printf(" %s %.3f;", stage.c_str(), seconds);
+  }
+  std::printf("\n");
   const long long peak = io::PeakResidentBytes();
   std::printf("end to end %.2f s, peak resident memory %.1f MB (%.0f bytes per point)\n",
               total_seconds, peak / 1e6, static_cast<double>(peak) / points.size());

@@ -59,6 +59,10 @@ std::string RunSummaryJson(const RunDescription& run, const solvers::DenoiseOpti
          {"iterations", Integer(pass.iterations)},
          {"termination", JsonString(solvers::TerminationTypeName(pass.termination))}}));
   }
+  std::vector<std::pair<std::string, std::string>> stages;
+  for (const auto& [stage, seconds] : result.stage_times.stages()) {
+    stages.emplace_back(stage, JsonNumber(seconds));
+  }
   long long features = 0;
   for (size_t i = 0; i < result.kept.size(); ++i) {
     features += result.kept[i] && result.indicators.is_feature[i];
@@ -91,7 +95,8 @@ std::string RunSummaryJson(const RunDescription& run, const solvers::DenoiseOpti
        {"note", JsonString(result.removal_note)},
        {"counts", counts},
        {"seconds", io::JsonObject({{"total", JsonNumber(result.total_seconds)},
-                                   {"setup", JsonNumber(result.setup_seconds)}})}});
+                                   {"setup", JsonNumber(result.setup_seconds)},
+                                   {"stages", io::JsonObject(stages)}})}});
 }
 
 std::vector<std::string> RunHeaderComments(const RunDescription& run,

@@ -110,7 +110,7 @@ constexpr double kMinLayeredShareToSpread = 0.5;
 // `split` the points of the first set that SeparateMergedSides moved, in `layered_only` the
 // others of that set that MoveBetweenLayerPointsOntoLayers moved.
 int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& sets,
-                  bool read_layers, bool move_between, int num_threads,
+                  bool read_layers, bool move_between, int num_threads, StageClock* clock,
                   std::vector<uint8_t>* split, std::vector<uint8_t>* layered_only) {
   std::vector<energy::PointList> normalized(sets.size());
   std::vector<std::vector<uint8_t>> movable(sets.size());
@@ -128,6 +128,7 @@ int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& set
   int moved = 0;
   const std::vector<energy::PointList> separated =
       SeparateMergedSides(parts, num_threads, &moved);
+  clock->Lap("merged sides");
   split->assign(separated[0].size(), 0);
   for (size_t i = 0; i < separated[0].size(); ++i) {
     (*split)[i] = separated[0][i] != normalized[0][i];
@@ -150,6 +151,7 @@ int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& set
       }
     }
   }
+  if (read_layers) clock->Lap("layers");
   return moved;
 }
 
@@ -203,6 +205,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
                                 std::to_string(points.size()) + " points");
   }
   DenoiseState state;
+  StageClock clock(&state.stage_times);
   state.order = energy::MortonOrder(points);
   const int threads = options.settings.num_threads;
   const energy::PointList ordered_points = ToProblemOrder(points, state.order);
@@ -226,6 +229,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
     if (!thinning.rows.empty()) SplitOffUnsolved(thinning.rows, ordered_points, &state,
                                                  &solved_points);
   }
+  clock.Lap("order and probe");
   CheckFitsInMemory(static_cast<int>(solved_points.size()), problem_options.k);
   // The problem's points are those the chosen probe searched (the whole cloud, or the
   // subsample in the same order): its search is reused.
@@ -234,12 +238,14 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
   state.neighborhood.split_search.reset();
   state.neighborhood.k = state.problem.k();
   state.setup_seconds = SecondsSince(start);
+  clock.Lap("graph");
   energy::PointList ordered_normals;
   if (normals) ordered_normals = ToProblemOrder(*normals, state.order);
   state.variables = InitialState(state.problem, options.settings.energy,
                                  options.EffectiveInitialization(), threads,
                                  options.initialization_seed,
                                  normals ? &ordered_normals : nullptr);
+  clock.Lap("initial state");
   return state;
 }
 
@@ -247,6 +253,7 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
                                 const IterationCallback& callback) {
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
+  StageClock clock(&state->stage_times);
   SolverSettings settings = options.settings;
   settings.energy =
       energy::ScaleWeightsToData(state->problem, options.settings.energy, options.weights,
@@ -269,6 +276,7 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
   if (!summary.IsSolutionUsable()) {
     throw std::runtime_error("minimization failed: " + summary.message);
   }
+  clock.Lap("solve");
   return summary;
 }
 
@@ -277,6 +285,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   const energy::Problem& problem = state.problem;
   const std::vector<int>& order = state.order;
   DenoiseResult result;
+  result.stage_times = state.stage_times;
+  StageClock clock(&result.stage_times);
   result.summary = std::move(summary);
   result.setup_seconds = state.setup_seconds;
   result.neighborhood = state.neighborhood;
@@ -297,6 +307,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
                              &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
                                          options.final_step, options.settings.num_threads);
+  clock.Lap("projection");
   // Even spacing and the offset feedback move the output in the normalized frame; outliers
   // stay where they are.
   energy::PointList normalized;
@@ -330,6 +341,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   if (options.final_step.even_spacing_rounds > 0) {
     normalize_output();
     spread_evenly(movable, &first_kernel);
+    clock.Lap("even spacing");
   }
   const NeighborhoodSize& estimates = state.neighborhood;
   const bool feed_back = options.final_step.offset_feedback && estimates.spacing > 0.0 &&
@@ -342,6 +354,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     for (size_t i = 0; i < normalized.size(); ++i) {
       result.projected[i] = problem.frame.ToInput(fed_back[i]);
     }
+    clock.Lap("offset feedback");
   }
   energy::PointList extended_points, extended_normals;
   PointIndicators extended;
@@ -362,6 +375,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
         extended_points[q] = problem.frame.ToInput(points[q]);
       }
     }
+    clock.Lap("subsample extension");
   }
   // Merged sides of a thin part, told apart (merged_sides.h): the solved points and those of
   // a subsample run's extension, with one count of merged regions. A resumed run keeps no
@@ -385,7 +399,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     }
     std::vector<uint8_t> split, layered_only;
     result.num_separated = SeparateSides(problem.frame, sets, read_layers, move_between,
-                                         options.settings.num_threads, &split, &layered_only);
+                                         options.settings.num_threads, &clock, &split,
+                                         &layered_only);
     // Each side of a split region holds about half of the points spread over the merged
     // layer, drawn at random: spread again, the split points only, with a kernel measured on
     // them (docs/method.md, "Even spacing", "After the sides are told apart"). Then the
@@ -403,6 +418,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
         for (size_t i = 0; i < movable.size(); ++i) movable[i] = movable[i] && (*moved)[i];
         double measured = 0.0;
         spread_evenly(movable, moved == &split ? &measured : &first_kernel);
+        clock.Lap("even spacing again");
       }
     }
   }
@@ -417,10 +433,12 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     for (size_t i = 0; i < normalized.size(); ++i) {
       if (smoothed[i] != normalized[i]) result.projected[i] = problem.frame.ToInput(smoothed[i]);
     }
+    clock.Lap("height smoothing");
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
                                         options.final_step.snapping, &result.projected);
+    clock.Lap("feature snapping");
   }
   const std::vector<int>& left_out = state.left_out;
   result.projected = ToInputOrder(result.projected, order, extended_points, left_out);
@@ -507,11 +525,13 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
     result.solved_points = next.solved_points;
     result.subsampled = next.subsampled;
     result.pass_summaries.push_back(next.pass_summaries.front());
+    result.stage_times.Add(next.stage_times);
     removed_by_last = next.num_removed;
     last_rows = std::move(rows);
   }
   if (options.final_step.remove_outliers && result.removal_note.empty() &&
       !StoppedByCallback(result)) {
+    StageClock clock(&result.stage_times);
     const std::vector<uint8_t> isolated = FlagIsolatedPoints(
         points, result.kept, options.final_step.isolation, options.settings.num_threads);
     for (size_t i = 0; i < points.size(); ++i) {
@@ -521,6 +541,7 @@ DenoiseResult RerunWithoutOutliers(const energy::PointList& points, const Denois
       ++result.num_isolated;
     }
     result.num_removed += result.num_isolated;
+    clock.Lap("isolation test");
   }
   result.num_outliers = 0;
   result.num_features = 0;
@@ -628,6 +649,8 @@ energy::PointList InputPointsOf(const DenoiseState& state) {
 DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOptions& options,
                               const DenoiseHooks& hooks, const energy::PointList* normals) {
   const Clock::time_point start = Clock::now();
+  StageTimes before_passes;
+  StageClock clock(&before_passes);
   std::string error;
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   const std::vector<uint8_t> far = FlagFarPoints(points, options.far_points);
@@ -673,6 +696,7 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
         std::to_string(fewest) + (options.choose_k ? " to choose k from the data" : "") +
         " (give a smaller --k)");
   }
+  clock.Lap("far points and repeats");
   DenoiseResult result;
   if (rows.size() == points.size()) {
     result = DenoiseNearPoints(points, options, hooks, normals);
@@ -689,6 +713,8 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
   result.num_duplicates = static_cast<int>(repeats - near_repeats);
   result.num_near_repeats = static_cast<int>(near_repeats);
   if (options.mark_outliers) MarkRemovedPoints(points, &result);
+  before_passes.Add(result.stage_times);
+  result.stage_times = std::move(before_passes);
   result.total_seconds = SecondsSince(start);
   return result;
 }

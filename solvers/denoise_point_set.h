@@ -24,6 +24,7 @@
 #include "solvers/neighborhood_size.h"
 #include "solvers/solver_settings.h"
 #include "solvers/solver_summary.h"
+#include "solvers/stage_times.h"
 
 namespace lpd::solvers {
 
@@ -106,6 +107,7 @@ struct DenoiseResult {
   SolverSummary summary;
   double setup_seconds = 0.0;        // normalization and k-NN graph
   double total_seconds = 0.0;
+  StageTimes stage_times;            // every pass's stages (stage_times.h)
 };
 
 // A denoising run between its stages: the problem with its points in Morton order (for
@@ -118,6 +120,7 @@ struct DenoiseState {
   // The noise and spacing estimates behind k when it was chosen from the data (else k only).
   NeighborhoodSize neighborhood;
   double setup_seconds = 0.0;  // normalization and k-NN graph
+  StageTimes stage_times;      // the stages run so far; not saved with the state
   // When the problem holds a subsample (subsample_extension.h), the input points left out of
   // it: their input indices and coordinates. FinishDenoising extends the result to them.
   std::vector<int> left_out;

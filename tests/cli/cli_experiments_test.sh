@@ -72,6 +72,13 @@ assert summary["parameters"]["outliers"] == "mark" and summary["derived"]["k"] >
 assert len(summary["passes"]) == 1 and summary["passes"][0]["iterations"] <= 8
 assert "comment lpd parameters preset=default" in header and "outliers=mark" in header
 assert "comment lpd derived k=" in header
+# The stages' times, in the order they ran, add up to the run's (less what is not a stage).
+seconds = summary["seconds"]
+stages = seconds["stages"]
+assert list(stages)[:6] == ["far points and repeats", "order and probe", "graph",
+                            "initial state", "solve", "projection"], stages
+assert all(s >= 0 for s in stages.values()) and stages["solve"] > 0, stages
+assert 0.5 * seconds["total"] <= sum(stages.values()) <= seconds["total"] + 1e-6, seconds
 print("ok   summary_json:", counts)
 PY
 expect_error summary_json_is_output denoise "$dir/noisy.ply" -o s.ply --summary_json=./s.ply
