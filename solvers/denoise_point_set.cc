@@ -108,7 +108,8 @@ constexpr double kMinLayeredShareToSpread = 0.5;
 // MoveBetweenLayerPointsOntoLayers in each (points between the layers moved with
 // `move_between`), the flagged outliers standing; returns how many points moved, and flags in
 // `split` the points of the first set that SeparateMergedSides moved, in `layered_only` the
-// others of that set that MoveBetweenLayerPointsOntoLayers moved.
+// others of that set that MoveBetweenLayerPointsOntoLayers moved. Each step is a lap of
+// `clock` ("merged sides", "layers").
 int SeparateSides(const energy::Frame& frame, const std::vector<SidesInput>& sets,
                   bool read_layers, bool move_between, int num_threads, StageClock* clock,
                   std::vector<uint8_t>* split, std::vector<uint8_t>* layered_only) {
