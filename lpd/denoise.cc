@@ -53,6 +53,7 @@ Summary MakeSummary(const solvers::DenoiseResult& run, const solvers::DenoiseOpt
   summary.note = run.removal_note;
   summary.seconds = run.total_seconds;
   summary.setup_seconds = run.setup_seconds;
+  summary.stage_seconds = run.stage_times.stages();
   return summary;
 }
 

@@ -97,6 +97,9 @@ struct Summary {
   std::string note;           // e.g. why flagged outliers were kept
   double seconds = 0.0;
   double setup_seconds = 0.0;  // normalization and k-NN graph
+  // The wall seconds of each stage that ran ("order and probe", "graph", "solve",
+  // "projection", "even spacing", ...), in the order each first ran, summed over the passes.
+  std::vector<std::pair<std::string, double>> stage_seconds;
 };
 
 // One entry per output point: the input points that were not removed as outliers, in

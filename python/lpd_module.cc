@@ -98,6 +98,9 @@ py::dict SummaryDict(const lpd::Summary& s) {
   d["note"] = s.note;
   d["seconds"] = s.seconds;
   d["setup_seconds"] = s.setup_seconds;
+  py::dict stages;  // in the order the stages ran (Python dicts keep it)
+  for (const auto& [stage, seconds] : s.stage_seconds) stages[py::str(stage)] = seconds;
+  d["stage_seconds"] = stages;
   return d;
 }
 

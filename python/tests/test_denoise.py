@@ -70,6 +70,10 @@ def test_result_rows_follow_the_kept_input_rows():
     assert summary["input_points"] == 3000 and summary["output_points"] == n
     assert summary["removed"] == 3000 - n
     assert summary["termination"] in ("CONVERGENCE", "NO_CONVERGENCE")
+    stages = summary["stage_seconds"]
+    assert list(stages)[:6] == ["far points and repeats", "order and probe", "graph",
+                                "initial state", "solve", "projection"], stages
+    assert min(stages.values()) >= 0 and sum(stages.values()) <= summary["seconds"] + 1e-6
 
 
 def test_repeated_rows_take_their_first_occurrences_result():
