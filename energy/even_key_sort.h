@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace lpd::energy {
@@ -67,6 +68,11 @@ void SortByEvenKeys(T* values, size_t count, const Key& key, const Less& less) {
     begin = end;
   }
   std::copy(scattered.begin(), scattered.end(), values);
+}
+
+// Sorts values[0, count) ascending: the values are their own keys.
+inline void SortByEvenKeys(double* values, size_t count) {
+  SortByEvenKeys(values, count, [](double v) { return v; }, std::less<double>());
 }
 
 }  // namespace lpd::energy

@@ -126,7 +126,7 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   offsets.resize(count);
   for (int a = 0; a < count; ++a) offsets[a] = split.Offset(local[a]);
   sorted = offsets;
-  SortByEvenKeys(sorted.data(), sorted.size(), [](double o) { return o; }, std::less<double>());
+  SortByEvenKeys(sorted.data(), sorted.size());
   const TwoRuns runs = BestTwoRuns(sorted, kMinSheetPoints);
   const int best_size = runs.lower_size;
   const double best = runs.within;

@@ -264,8 +264,7 @@ Layers ReadLayers(const energy::PointList& inputs, const energy::PointList& outp
   }
   layers.asymmetry = in_plane_sum.norm() / found / std::sqrt(across[found - 1].first);
   sorted = heights;
-  energy::SortByEvenKeys(sorted.data(), sorted.size(), [](double h) { return h; },
-                         std::less<double>());
+  energy::SortByEvenKeys(sorted.data(), sorted.size());
   const int min_run = std::max(1, static_cast<int>(std::ceil(kMinLayerShare * found)));
   const energy::TwoRuns runs = energy::BestTwoRuns(sorted, min_run);
   const int lower_size = runs.lower_size;

@@ -75,6 +75,17 @@ TEST(SortByEvenKeys, FollowsADescendingComparatorWithANegatedKey) {
   EXPECT_EQ(values, expected);
 }
 
+TEST(SortByEvenKeys, SortsPlainValuesAscending) {
+  std::mt19937_64 random(4);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<double> values(128);
+  for (double& v : values) v = normal(random);
+  std::vector<double> expected = values;
+  std::sort(expected.begin(), expected.end());
+  SortByEvenKeys(values.data(), values.size());
+  EXPECT_EQ(values, expected);
+}
+
 TEST(SortByEvenKeys, FallsBackToStdSortOnKeysNotFinite) {
   std::vector<Entry> values = {{0, 3.0}, {1, HUGE_VAL}, {2, 1.0}, {3, 2.0}};
   SortByEvenKeys(values.data(), values.size(), Distance, Closer);
