@@ -81,10 +81,11 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
     if (!split_sheets) return;
     // The earlier split was over `nearest` as found: the same points in the same order
     // as `members` when p_i came first.
-    const SheetSplit split =
-        reuse_splits && nearest[0] == i
-            ? searched_before->splits[i]
-            : SplitSheets(points, members.data(), static_cast<int>(members.size()));
+    const int size = static_cast<int>(members.size());
+    const SheetSplit split = SplitNearJunction(
+        points, members.data(), size,
+        reuse_splits && nearest[0] == i ? searched_before->splits[i]
+                                        : SplitSheets(points, members.data(), size));
     separation[i] = static_cast<float>(split.separation);
     within_kurtosis[i] = static_cast<float>(split.within_kurtosis);
     footprint_difference[i] = static_cast<float>(split.footprint_difference);

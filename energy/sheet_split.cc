@@ -114,13 +114,15 @@ TwoRuns BestTwoRuns(const std::vector<double>& sorted, int min_run) {
   return runs;
 }
 
-SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
+namespace {
+
+// The split of the gathered neighbourhood `local` (sheet_split.h, SplitSheets); the size of
+// its smaller run in *smaller_run (0 where not split).
+SheetSplit SplitGathered(const std::vector<Point3>& local, int* smaller_run) {
   SheetSplit split;
+  *smaller_run = 0;
+  const int count = static_cast<int>(local.size());
   if (count < 2 * kMinSheetPoints) return split;
-  // The neighbourhood, gathered once: every pass below reads it in member order.
-  thread_local std::vector<Point3> local;
-  local.resize(count);
-  for (int a = 0; a < count; ++a) local[a] = points[members[a]];
   if (!PlaneNormal(local, &split.normal, &split.mean)) return split;
   thread_local std::vector<double> offsets, sorted;
   offsets.resize(count);
@@ -131,6 +133,7 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   const int best_size = runs.lower_size;
   const double best = runs.within;
   if (best_size == 0 || !(best > 0.0)) return split;
+  *smaller_run = std::min(best_size, count - best_size);
   split.threshold = 0.5 * (sorted[best_size - 1] + sorted[best_size]);
   split.lower_mean = runs.lower_mean;
   split.upper_mean = runs.upper_mean;
@@ -143,7 +146,7 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   split.within_kurtosis = fourth * count / (best * best);
   // Two sides of a thin part are parallel; the two faces of a sharp edge are not. (A run of
   // few points has no reliable normal: the other side's cap near a thin part's rim.)
-  if (std::min(best_size, count - best_size) >= kMinPointsForNormal) {
+  if (*smaller_run >= kMinPointsForNormal) {
     Eigen::Vector3d run_normal[2];
     RunNormals(local, offsets, split, run_normal);
     if (std::abs(run_normal[0].dot(run_normal[1])) <
@@ -155,6 +158,56 @@ SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
   split.footprint_difference =
       FootprintDifference(local, offsets, split.normal, split.mean, split.threshold);
   return split;
+}
+
+// points[members[0 .. count)], gathered once: every pass reads them in member order.
+const std::vector<Point3>& Gather(const PointList& points, const int* members, int count) {
+  thread_local std::vector<Point3> local;
+  local.resize(count);
+  for (int a = 0; a < count; ++a) local[a] = points[members[a]];
+  return local;
+}
+
+}  // namespace
+
+SheetSplit SplitSheets(const PointList& points, const int* members, int count) {
+  int smaller_run = 0;
+  return SplitGathered(Gather(points, members, count), &smaller_run);
+}
+
+SheetSplit SplitNearJunction(const PointList& points, const int* members, int count,
+                             const SheetSplit& whole) {
+  if (whole.separation >= kThinRegionSeparation || count < 2 * kJunctionPlanePoints) {
+    return whole;
+  }
+  const std::vector<Point3>& local = Gather(points, members, count);
+  // The slab of the part p_i lies on: the points within kJunctionBandDeviations RMS offsets of
+  // the plane through its nearest.
+  Eigen::Vector3d normal, mean;
+  const std::vector<Point3> nearest(local.begin(), local.begin() + kJunctionPlanePoints);
+  PlaneNormal(nearest, &normal, &mean);
+  double squares = 0.0;
+  for (const Point3& p : nearest) {
+    const double offset = normal.dot(p - mean);
+    squares += offset * offset;
+  }
+  const double band = kJunctionBandDeviations * std::sqrt(squares / kJunctionPlanePoints);
+  thread_local std::vector<Point3> slab;
+  slab.clear();
+  for (const Point3& p : local) {
+    if (std::abs(normal.dot(p - mean)) < band) slab.push_back(p);
+  }
+  // Where it leaves out few points (the noise's tails), no other part is near.
+  if (count - static_cast<int>(slab.size()) < kJunctionLeftOutShare * count) return whole;
+  // Its runs must both be large enough to be tested for parallel sides (a few points of
+  // another face within the slab, beside a sharp edge, are not a side), and they must stand
+  // apart as one sheet's runs hardly do: the better of two splits is otherwise the larger of
+  // two draws of one sheet's separation.
+  int smaller_run = 0;
+  const SheetSplit slab_split = SplitGathered(slab, &smaller_run);
+  return smaller_run >= kMinPointsForNormal && slab_split.separation > kJunctionSeparation
+             ? slab_split
+             : whole;
 }
 
 }  // namespace lpd::energy

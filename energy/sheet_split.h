@@ -54,6 +54,18 @@
 // on plates and sheets 2.8-4.2 noise deviations apart (docs/method.md). So below
 // kClearSidesSeparation a region also needs its mean footprint difference under
 // kMaxTwoSidesFootprintDifference.
+//
+// Where a thin part meets another (a wall standing on a floor, a fin on a plate), a
+// neighbourhood near the junction holds both parts: its plane lies between them and its
+// offsets do not part into two runs. So where the whole neighbourhood does not pass
+// kThinRegionSeparation, the graph (neighbor_graph.h) also splits its slab: its points within
+// kJunctionBandDeviations RMS offsets of the plane through its kJunctionPlanePoints nearest
+// (the part p_i lies on), where that leaves out kJunctionLeftOutShare of them or more. The
+// slab's split is kept where it passes kJunctionSeparation, above one sheet's 99.9% point at
+// 100 points; the better of two splits would otherwise be the larger of two draws of one
+// sheet's separation. The noise probe judges the whole neighbourhoods only: a rod's slab
+// parts into its near and far sides, and counted as nearly split regions they turned off
+// the noise's widening there (docs/method.md, "Junctions of thin parts").
 #ifndef LPD_ENERGY_SHEET_SPLIT_H_
 #define LPD_ENERGY_SHEET_SPLIT_H_
 
@@ -78,6 +90,10 @@ constexpr double kThinGrowthSeedShare = 0.1;
 constexpr double kMinTwoSidesKurtosis = 2.2;
 constexpr double kClearSidesSeparation = 4.5;
 constexpr double kMaxTwoSidesFootprintDifference = 0.5;
+constexpr int kJunctionPlanePoints = 24;
+constexpr double kJunctionBandDeviations = 3.0;
+constexpr double kJunctionSeparation = 3.5;
+constexpr double kJunctionLeftOutShare = 0.1;
 
 struct SheetSplit {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // of the least-squares plane
@@ -103,6 +119,13 @@ struct SheetSplit {
 
 // The split of points[members[0 .. count)] (count >= 2 kMinSheetPoints, else separation 0).
 SheetSplit SplitSheets(const PointList& points, const int* members, int count);
+
+// `whole`, SplitSheets of the same members, where it passes kThinRegionSeparation; else the
+// split of the slab around the plane of the kJunctionPlanePoints nearest (a thin part's
+// junction, above) where it passes kJunctionSeparation; else `whole`. The members are the
+// nearest of members[0], nearest first.
+SheetSplit SplitNearJunction(const PointList& points, const int* members, int count,
+                             const SheetSplit& whole);
 
 // The exact one-dimensional 2-means of a sorted list: the lower run sorted[0 .. lower_size)
 // and the upper run, each of min_run values or more, whose values have the least sum of
