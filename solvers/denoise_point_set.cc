@@ -325,10 +325,12 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   // following its own fitted surface: it keeps the blend's offset from it. `kernel`: as
   // SpreadEvenly takes it.
   auto spread_evenly = [&](const std::vector<uint8_t>& spreading, double* kernel) {
-    const energy::PointList spread =
+    energy::PointList spread =
         SpreadEvenly(normalized, result.normals, spreading,
                      options.final_step.even_spacing_rounds, options.settings.num_threads,
                      kernel);
+    HoldWithinInputs(normalized, problem.points, problem.graph, spreading,
+                     options.settings.num_threads, &spread);
     for (size_t i = 0; i < normalized.size(); ++i) {
       Eigen::Vector3d from, to, normal;
       if (!spreading[i] || !surfaces[i].Project(normalized[i], &from, &normal) ||

@@ -83,4 +83,24 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
   return result;
 }
 
+void HoldWithinInputs(const energy::PointList& start, const energy::PointList& inputs,
+                      const energy::NeighborGraph& graph, const std::vector<uint8_t>& moved,
+                      int num_threads, energy::PointList* spread) {
+  const int n = static_cast<int>(start.size());
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+  for (int i = 0; i < n; ++i) {
+    if (!moved[i]) continue;
+    const energy::Point3 move = (*spread)[i] - start[i];
+    const double length = move.norm();
+    if (!(length > 0.0)) continue;
+    const energy::Point3 direction = move / length;
+    double reach = direction.dot(inputs[i] - start[i]);
+    const int* neighbors = graph.NeighborsOf(i);
+    for (int a = 0; a < graph.k; ++a) {
+      reach = std::max(reach, direction.dot(inputs[neighbors[a]] - start[i]));
+    }
+    if (length > reach) (*spread)[i] = start[i] + std::max(reach, 0.0) * direction;
+  }
+}
+
 }  // namespace lpd::solvers

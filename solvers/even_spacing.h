@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "energy/neighbor_graph.h"
 #include "energy/point3.h"
 
 namespace lpd::solvers {
@@ -35,6 +36,15 @@ namespace lpd::solvers {
 energy::PointList SpreadEvenly(const energy::PointList& points, const energy::PointList& normals,
                                const std::vector<uint8_t>& movable, int rounds,
                                int num_threads, double* kernel = nullptr);
+
+// Shortens the move of each point with moved[i] from start[i] to (*spread)[i] so that it goes
+// no farther along its own direction than the farthest of inputs[i] and its neighbours'
+// inputs in `graph` does: the repulsion pushes the outputs at a rim or at a thin wall's top
+// outward each round, past the end of the data (docs/method.md, "The spacing held within the
+// inputs").
+void HoldWithinInputs(const energy::PointList& start, const energy::PointList& inputs,
+                      const energy::NeighborGraph& graph, const std::vector<uint8_t>& moved,
+                      int num_threads, energy::PointList* spread);
 
 }  // namespace lpd::solvers
 

@@ -47,6 +47,90 @@ double CoefficientOfVariation(const std::vector<double>& values) {
   return std::sqrt(squares / values.size() - mean * mean) / mean;
 }
 
+// The k nearest of every point by brute force, in a graph of N(i) only.
+energy::NeighborGraph NearestGraph(const energy::PointList& points, int k) {
+  energy::NeighborGraph graph;
+  graph.k = k;
+  graph.neighbors.resize(points.size() * k);
+  for (size_t i = 0; i < points.size(); ++i) {
+    std::vector<std::pair<double, int>> by_distance;
+    for (size_t j = 0; j < points.size(); ++j) {
+      if (j != i) by_distance.emplace_back((points[i] - points[j]).squaredNorm(), int(j));
+    }
+    std::partial_sort(by_distance.begin(), by_distance.begin() + k, by_distance.end());
+    for (int a = 0; a < k; ++a) graph.neighbors[i * k + a] = by_distance[a].second;
+  }
+  return graph;
+}
+
+TEST(HoldWithinInputs, ShortensEachMoveToTheFarthestInputAlongItByBruteForce) {
+  std::mt19937 random(8);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const energy::PointList inputs = RandomSquare(300, 5);
+  const energy::NeighborGraph graph = NearestGraph(inputs, 6);
+  energy::PointList start, spread;
+  std::vector<uint8_t> moved;
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    start.push_back(inputs[i] + 0.01 * energy::Point3(normal(random), normal(random), 0.0));
+    spread.push_back(start[i] + 0.08 * energy::Point3(normal(random), normal(random), 0.0));
+    moved.push_back(i % 5 != 0);
+  }
+  energy::PointList held = spread;
+  HoldWithinInputs(start, inputs, graph, moved, 2, &held);
+  int shortened = 0;
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    if (!moved[i]) {
+      EXPECT_EQ(held[i], spread[i]);
+      continue;
+    }
+    const energy::Point3 move = spread[i] - start[i];
+    const energy::Point3 direction = move.normalized();
+    double reach = -INFINITY;
+    for (size_t j = 0; j < inputs.size(); ++j) {
+      const int* n = graph.NeighborsOf(int(i));
+      if (j == i || std::find(n, n + graph.k, int(j)) != n + graph.k) {
+        reach = std::max(reach, direction.dot(inputs[j] - start[i]));
+      }
+    }
+    const double length = std::min(move.norm(), std::max(reach, 0.0));
+    EXPECT_LT((held[i] - (start[i] + length * direction)).norm(), 1e-12) << "point " << i;
+    shortened += length < move.norm();
+  }
+  EXPECT_GT(shortened, 30);  // the test reaches both cases
+  EXPECT_LT(shortened, 210);
+}
+
+TEST(HoldWithinInputs, KeepsTheSpacingFromDriftingPastASquaresEdges) {
+  // Spread from the inputs themselves, a random square drifts out across its edges (by up to
+  // 0.45 kernels); held within its inputs, far less.
+  const energy::PointList inputs = RandomSquare(2000, 3);
+  const energy::PointList normals(inputs.size(), energy::Point3(0, 0, 1));
+  const std::vector<uint8_t> movable(inputs.size(), 1);
+  double kernel = 0.0;
+  const energy::PointList spread = SpreadEvenly(inputs, normals, movable, 10, 2, &kernel);
+  energy::PointList held = spread;
+  HoldWithinInputs(inputs, inputs, NearestGraph(inputs, 12), movable, 2, &held);
+  // The points outside the square and their summed squared distance from it.
+  auto outside = [](const energy::PointList& points, double* squares) {
+    int count = 0;
+    *squares = 0.0;
+    for (const energy::Point3& p : points) {
+      const double dx = std::max({-p.x(), p.x() - 1.0, 0.0}), dy = std::max({-p.y(), p.y() - 1.0, 0.0});
+      count += dx > 0.0 || dy > 0.0;
+      *squares += dx * dx + dy * dy;
+    }
+    return count;
+  };
+  double spread_squares = 0.0, held_squares = 0.0;
+  const int spread_outside = outside(spread, &spread_squares);
+  const int held_outside = outside(held, &held_squares);
+  // Seen: 26 points outside, 3.75e-4 in squares; held, 12 and 6.3e-5 (a move along a
+  // diagonal may still cross an edge as far as an input reaches along it).
+  EXPECT_GT(spread_outside, 20);
+  EXPECT_LT(held_outside, spread_outside / 2);
+  EXPECT_LT(held_squares, 0.25 * spread_squares);
+}
+
 TEST(EvenSpacing, EvensOutASquareWithinItsPlane) {
   const energy::PointList points = RandomSquare(2000, 3);
   const energy::PointList normals(points.size(), energy::Point3(0, 0, 1));
