@@ -330,7 +330,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
                      options.final_step.even_spacing_rounds, options.settings.num_threads,
                      kernel);
     HoldWithinInputs(normalized, problem.points, problem.graph, spreading,
-                     options.settings.num_threads, &spread);
+                     state.neighborhood.noise_sigma, options.settings.num_threads, &spread);
     for (size_t i = 0; i < normalized.size(); ++i) {
       Eigen::Vector3d from, to, normal;
       if (!spreading[i] || !surfaces[i].Project(normalized[i], &from, &normal) ||

@@ -85,7 +85,7 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
 
 void HoldWithinInputs(const energy::PointList& start, const energy::PointList& inputs,
                       const energy::NeighborGraph& graph, const std::vector<uint8_t>& moved,
-                      int num_threads, energy::PointList* spread) {
+                      double margin, int num_threads, energy::PointList* spread) {
   const int n = static_cast<int>(start.size());
 #pragma omp parallel for schedule(static) num_threads(num_threads)
   for (int i = 0; i < n; ++i) {
@@ -99,6 +99,7 @@ void HoldWithinInputs(const energy::PointList& start, const energy::PointList& i
     for (int a = 0; a < graph.k; ++a) {
       reach = std::max(reach, direction.dot(inputs[neighbors[a]] - start[i]));
     }
+    reach -= margin;
     if (length > reach) (*spread)[i] = start[i] + std::max(reach, 0.0) * direction;
   }
 }

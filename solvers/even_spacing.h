@@ -39,12 +39,13 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
 
 // Shortens the move of each point with moved[i] from start[i] to (*spread)[i] so that it goes
 // no farther along its own direction than the farthest of inputs[i] and its neighbours'
-// inputs in `graph` does: the repulsion pushes the outputs at a rim or at a thin wall's top
-// outward each round, past the end of the data (docs/method.md, "The spacing held within the
-// inputs").
+// inputs in `graph` does, less `margin` (the noise's deviation: the farthest of a rim's noisy
+// inputs lies beyond the rim): the repulsion pushes the outputs at a rim or at a thin wall's
+// top outward each round, past the end of the data (docs/method.md, "The spacing held within
+// the inputs").
 void HoldWithinInputs(const energy::PointList& start, const energy::PointList& inputs,
                       const energy::NeighborGraph& graph, const std::vector<uint8_t>& moved,
-                      int num_threads, energy::PointList* spread);
+                      double margin, int num_threads, energy::PointList* spread);
 
 }  // namespace lpd::solvers
 
