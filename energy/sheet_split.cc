@@ -11,18 +11,17 @@
 namespace lpd::energy {
 namespace {
 
-// The unit normal of the least-squares plane through `points` (the centroid in *mean); false
-// for fewer than 3 points.
-bool PlaneNormal(const std::vector<Point3>& points, Eigen::Vector3d* normal,
+// The unit normal of the least-squares plane through points[0 .. count) (the centroid in
+// *mean); false for fewer than 3 points.
+bool PlaneNormal(const Point3* points, int count, Eigen::Vector3d* normal,
                  Eigen::Vector3d* mean) {
-  const int count = static_cast<int>(points.size());
   if (count < 3) return false;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const Point3& p : points) sum += p;
+  for (int a = 0; a < count; ++a) sum += points[a];
   *mean = sum / count;
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const Point3& p : points) {
-    const Eigen::Vector3d d = p - *mean;
+  for (int a = 0; a < count; ++a) {
+    const Eigen::Vector3d d = points[a] - *mean;
     scatter += d * d.transpose();
   }
   *normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
@@ -123,7 +122,7 @@ SheetSplit SplitGathered(const std::vector<Point3>& local, int* smaller_run) {
   *smaller_run = 0;
   const int count = static_cast<int>(local.size());
   if (count < 2 * kMinSheetPoints) return split;
-  if (!PlaneNormal(local, &split.normal, &split.mean)) return split;
+  if (!PlaneNormal(local.data(), count, &split.normal, &split.mean)) return split;
   thread_local std::vector<double> offsets, sorted;
   offsets.resize(count);
   for (int a = 0; a < count; ++a) offsets[a] = split.Offset(local[a]);
@@ -184,11 +183,10 @@ SheetSplit SplitNearJunction(const PointList& points, const int* members, int co
   // The slab of the part p_i lies on: the points within kJunctionBandDeviations RMS offsets of
   // the plane through its nearest.
   Eigen::Vector3d normal, mean;
-  const std::vector<Point3> nearest(local.begin(), local.begin() + kJunctionPlanePoints);
-  PlaneNormal(nearest, &normal, &mean);
+  PlaneNormal(local.data(), kJunctionPlanePoints, &normal, &mean);
   double squares = 0.0;
-  for (const Point3& p : nearest) {
-    const double offset = normal.dot(p - mean);
+  for (int a = 0; a < kJunctionPlanePoints; ++a) {
+    const double offset = normal.dot(local[a] - mean);
     squares += offset * offset;
   }
   const double band = kJunctionBandDeviations * std::sqrt(squares / kJunctionPlanePoints);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <random>
 #include <utility>
@@ -63,11 +64,17 @@ TEST(SortByEvenKeys, OrdersBunchedFarAndTiedKeysAsStdSort) {
   ExpectSortedAsStdSort(equal);
 }
 
-TEST(SortByEvenKeys, FollowsADescendingComparatorWithANegatedKey) {
-  std::mt19937_64 random(3);
+// `count` standard normal values, seeded.
+std::vector<double> NormalValues(int count, uint64_t seed) {
+  std::mt19937_64 random(seed);
   std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<double> values(200);
+  std::vector<double> values(count);
   for (double& v : values) v = normal(random);
+  return values;
+}
+
+TEST(SortByEvenKeys, FollowsADescendingComparatorWithANegatedKey) {
+  std::vector<double> values = NormalValues(200, 3);
   std::vector<double> expected = values;
   std::sort(expected.begin(), expected.end(), std::greater<double>());
   SortByEvenKeys(values.data(), values.size(), [](double v) { return -v; },
@@ -76,10 +83,7 @@ TEST(SortByEvenKeys, FollowsADescendingComparatorWithANegatedKey) {
 }
 
 TEST(SortByEvenKeys, SortsPlainValuesAscending) {
-  std::mt19937_64 random(4);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<double> values(128);
-  for (double& v : values) v = normal(random);
+  std::vector<double> values = NormalValues(128, 4);
   std::vector<double> expected = values;
   std::sort(expected.begin(), expected.end());
   SortByEvenKeys(values.data(), values.size());
