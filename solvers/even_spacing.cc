@@ -1,20 +1,70 @@
 #include "solvers/even_spacing.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "energy/nearest_neighbors.h"
+#include "solvers/lloyd_cell.h"
 #include "solvers/median.h"
 
 namespace lpd::solvers {
 namespace {
 
-constexpr int kNeighbors = 10;  // pushing neighbours of a point
+constexpr int kNeighbors = 10;  // the neighbours whose bisectors bound a point's cell
+static_assert(kNeighbors <= kMaxCellSites);
 constexpr double kStep = 0.4;   // largest move per round, in units of h
+// The cell reaches beyond the neighbours' hull by half a row of a hexagonal lattice of the
+// median nearest distance a: its rows lie sqrt(3) / 2 a apart.
+constexpr double kHullMargin = 0.4330127018922193;  // sqrt(3) / 4
 // A point with a neighbour whose normal is more than 30 degrees off its own sits at a sharp
 // edge: its tangent plane would carry it off the other face, so it moves along the edge only.
 // Where two such neighbours give edges more than 30 degrees apart (a corner), it stays.
 constexpr double kMinNormalCosine = 0.866;
+
+// The move of row r in a round: to the centroid of its cell (lloyd_cell.h) among the offsets
+// of its neighbours `nearest` within its tangent plane, along the edge at a sharp edge, none at
+// a corner; at most kStep h long.
+energy::Point3 LloydMove(int r, const energy::PointList& current,
+                         const energy::PointList& normals, const std::vector<int>& rows,
+                         const int* nearest, const double* squared, int found, double margin,
+                         double h) {
+  const energy::Point3 stay = energy::Point3::Zero();
+  const energy::Point3& p = current[r];
+  const energy::Point3& n = normals[rows[r]];
+  if (n.squaredNorm() == 0.0) return stay;
+  const energy::Point3 u = n.unitOrthogonal(), v = n.cross(u);
+  std::array<Eigen::Vector2d, kNeighbors + 1> sites;
+  int num_sites = 0;
+  energy::Point3 edge = energy::Point3::Zero();
+  double edge_cosine = 1.0;  // 1: no sharp edge
+  for (int a = 0; a < found; ++a) {
+    if (nearest[a] == r || !(squared[a] > 0.0)) continue;
+    const energy::Point3& m = normals[rows[nearest[a]]];
+    const double cosine = std::abs(n.dot(m));
+    if (cosine < kMinNormalCosine) {
+      if (m.squaredNorm() == 0.0) return stay;
+      const energy::Point3 along = n.cross(m).normalized();
+      if (edge_cosine < 1.0 && std::abs(along.dot(edge)) < kMinNormalCosine) return stay;
+      if (cosine < edge_cosine) {  // the edge of the most different face
+        edge_cosine = cosine;
+        edge = along;
+      }
+    }
+    const energy::Point3 offset = current[nearest[a]] - p;
+    const double height = n.dot(offset);
+    // A neighbour more than 45 degrees off the tangent plane (across a thin part, or on a face
+    // beyond a sharp edge) bounds no cell within it.
+    if (2.0 * height * height > squared[a]) continue;
+    sites[num_sites++] = {u.dot(offset), v.dot(offset)};
+  }
+  Eigen::Vector2d centroid;
+  if (!ClippedCellCentroid(sites.data(), num_sites, margin, &centroid)) return stay;
+  energy::Point3 move = centroid.x() * u + centroid.y() * v;
+  if (edge_cosine < 1.0) move = edge * edge.dot(move);
+  const double length = move.norm();
+  return length > kStep * h ? energy::Point3(move * (kStep * h / length)) : move;
+}
 
 }  // namespace
 
@@ -32,51 +82,32 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
   for (int r = 0; r < count; ++r) current[r] = points[rows[r]];
   double h = kernel && *kernel > 0.0 ? *kernel : 0.0;
   energy::PointList next(count);
+  std::vector<int> neighbors(static_cast<size_t>(count) * (kNeighbors + 1));
+  std::vector<double> squared(neighbors.size());
+  std::vector<int> found(count);
+  std::vector<double> nearest(count);
   for (int round = 0; round < rounds; ++round) {
     const energy::NearestNeighbors search(current);
-    auto query = [&current](int r) { return current[r]; };
+    search.ForEach(count, kNeighbors + 1, num_threads,
+                   [&current](int r) { return current[r]; },
+                   [&](int r, const int* indices, const double* distances, int num_found) {
+                     std::copy(indices, indices + num_found, &neighbors[r * (kNeighbors + 1)]);
+                     std::copy(distances, distances + num_found, &squared[r * (kNeighbors + 1)]);
+                     found[r] = num_found;
+                     nearest[r] = num_found > 1 ? std::sqrt(distances[1]) : 0.0;
+                   });
+    const double median_nearest = Median(&nearest);
     if (!(h > 0.0)) {
-      std::vector<double> nearest(count, 0.0);
-      search.ForEach(count, 2, num_threads, query,
-                     [&](int r, const int*, const double* squared, int found) {
-                       nearest[r] = found > 1 ? std::sqrt(squared[1]) : 0.0;
-                     });
-      h = 2.0 * Median(&nearest);
+      h = 2.0 * median_nearest;
       if (!(h > 0.0)) return result;
       if (kernel) *kernel = h;
     }
-    search.ForEach(count, kNeighbors + 1, num_threads, query,
-                   [&](int r, const int* nearest, const double* squared, int found) {
-                     const energy::Point3& p = current[r];
-                     const energy::Point3& n = normals[rows[r]];
-                     next[r] = p;
-                     if (n.squaredNorm() == 0.0) return;
-                     energy::Point3 force = energy::Point3::Zero();
-                     energy::Point3 edge = energy::Point3::Zero();  // zero: no sharp edge
-                     double edge_cosine = 1.0;
-                     for (int a = 0; a < found; ++a) {
-                       if (nearest[a] == r || !(squared[a] > 0.0)) continue;
-                       const energy::Point3& m = normals[rows[nearest[a]]];
-                       const double cosine = std::abs(n.dot(m));
-                       if (cosine < kMinNormalCosine) {
-                         if (m.squaredNorm() == 0.0) return;
-                         const energy::Point3 along = n.cross(m).normalized();
-                         if (edge_cosine < 1.0 && std::abs(along.dot(edge)) < kMinNormalCosine) {
-                           return;  // at a corner: stays
-                         }
-                         if (cosine < edge_cosine) {  // the edge of the most different face
-                           edge_cosine = cosine;
-                           edge = along;
-                         }
-                       }
-                       const double distance = std::sqrt(squared[a]);
-                       force += (p - current[nearest[a]]) / distance *
-                                std::exp(-4.0 * squared[a] / (h * h));
-                     }
-                     force -= n * n.dot(force);
-                     if (edge_cosine < 1.0) force = edge * edge.dot(force);
-                     next[r] = p + kStep * h * force / std::max(1.0, force.norm());
-                   });
+    const double margin = kHullMargin * median_nearest;
+#pragma omp parallel for schedule(static) num_threads(num_threads)
+    for (int r = 0; r < count; ++r) {
+      next[r] = current[r] + LloydMove(r, current, normals, rows, &neighbors[r * (kNeighbors + 1)],
+                                       &squared[r * (kNeighbors + 1)], found[r], margin, h);
+    }
     current.swap(next);
   }
   for (int r = 0; r < count; ++r) result[rows[r]] = current[r];

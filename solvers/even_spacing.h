@@ -6,18 +6,24 @@
 // sample moved back by the normal part of its own noise) is 3.68e-4 in Chamfer distance from
 // the clean samples, where a second Poisson-disk sample is 2.00e-4.
 //
-// SpreadEvenly pushes nearest neighbours apart within each point's tangent plane, in rounds
-// (Jacobi: every move from the positions of the round before):
-//   f_i = sum_{j in the kNeighbors nearest} (p_i - p_j) / |p_i - p_j| exp(-4 |p_i - p_j|^2 / h^2)
-//   p_i += kStep h P_i f_i / max(1, |P_i f_i|),   P_i = I - n_i n_i^T,
-// with h twice the median distance from a point to its nearest neighbour (the repulsion of
-// WLOP, Huang et al. 2009, without its attraction to the input: the caller carries each moved
-// point along its own fitted surface, FinishDenoising). A point moves at most kStep h per
-// round. At a sharp edge, where a neighbour's normal n_j is more than 30 degrees off n_i,
-// P_i = e e^T instead, e = n_i x n_j / |n_i x n_j| along the edge (n_j the most different
-// normal); a point whose such neighbours give edges more than 30 degrees apart (a corner)
-// stays. In a run on a subsample (subsample_extension.h), the subsample's points are spread,
-// not the points projected onto its surfaces afterwards.
+// SpreadEvenly relaxes the points within their tangent planes by Lloyd's method, in rounds
+// (Jacobi: every move from the positions of the round before): each point moves to the centroid
+// of its cell among its 10 nearest (lloyd_cell.h),
+//   C_i = { x in T_i : |x - p_i| <= |x - P_i p_j| } within their hull grown by sqrt(3) / 4 a,
+//   p_i += min(1, kStep h / |c_i - p_i|) (c_i - p_i),   c_i the centroid of C_i,
+// with T_i the tangent plane (normal n_i), P_i p_j a neighbour's offset projected into it
+// (neighbours more than 45 degrees off it, across a thin part, left out), a the median distance
+// from a point to its nearest neighbour in that round and h twice that distance in the first
+// round. A point moves at most kStep = 0.4 h a round. Lloyd's centroids tend to a centroidal
+// Voronoi tessellation, near a hexagonal lattice, whose gaps a surface sample can close least;
+// the grown hull ends the cells at a rim half a lattice row beyond the outer points, where a
+// hexagonal lattice's cells end, so that a rim neither spreads out nor shrinks from round to
+// round (docs/method.md, "Even spacing"). The caller carries each moved point along its own
+// fitted surface (FinishDenoising). At a sharp edge, where a neighbour's normal n_j is more than
+// 30 degrees off n_i, the move is projected onto e = n_i x n_j / |n_i x n_j| along the edge
+// (n_j the most different normal); a point whose such neighbours give edges more than 30
+// degrees apart (a corner) stays. In a run on a subsample (subsample_extension.h), the
+// subsample's points are spread, not the points projected onto its surfaces afterwards.
 #ifndef LPD_SOLVERS_EVEN_SPACING_H_
 #define LPD_SOLVERS_EVEN_SPACING_H_
 
@@ -29,8 +35,8 @@
 
 namespace lpd::solvers {
 
-// `points` after `rounds` rounds of the repulsion above. Only the points with movable[i] move
-// and push (the others, such as outliers, are left out); `normals` are unit normals, and a
+// `points` after `rounds` rounds of the relaxation above. Only the points with movable[i] move
+// and bound cells (the others, such as outliers, are left out); `normals` are unit normals, and a
 // point with a zero normal stays. `kernel` (optional): h where it holds a value over 0, else
 // h is measured as above and written to it. Deterministic for any thread count.
 energy::PointList SpreadEvenly(const energy::PointList& points, const energy::PointList& normals,
@@ -40,9 +46,10 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
 // Shortens the move of each point with moved[i] from start[i] to (*spread)[i] so that it goes
 // no farther along its own direction than the farthest of inputs[i] and its neighbours'
 // inputs in `graph` does, less `margin` (the noise's deviation: the farthest of a rim's noisy
-// inputs lies beyond the rim): the repulsion pushes the outputs at a rim or at a thin wall's
-// top outward each round, past the end of the data (docs/method.md, "The spacing held within
+// inputs lies beyond the rim): the relaxation can carry the outputs at a rim or at a thin
+// wall's top outward, past the end of the data (docs/method.md, "The spacing held within
 // the inputs").
+void SetSpreadDomain(const energy::PointList* inputs, const energy::NeighborGraph* graph, double margin);
 void HoldWithinInputs(const energy::PointList& start, const energy::PointList& inputs,
                       const energy::NeighborGraph& graph, const std::vector<uint8_t>& moved,
                       double margin, int num_threads, energy::PointList* spread);
