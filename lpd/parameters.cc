@@ -409,7 +409,7 @@ std::vector<Parameter> FinalStepParameters() {
               [](O& o) -> int& { return o.final_step.blended_surfaces; }),
       Integer("even_spacing", kBoth,
               {kFinal,
-               "rounds of repulsion between nearest output points within their tangent planes, "
+               "rounds of Lloyd's relaxation of the output points within their tangent planes, "
                "each point then following its own fitted surface: the output's spacing evens "
                "out instead of keeping the noise along the surface (0: off)",
                "", "0"},

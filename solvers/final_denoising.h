@@ -55,7 +55,7 @@ struct FinalDenoisingOptions {
   // / 45 / all: FANDISK 0.03 1.829 / 1.811 / 1.800 / 1.804 / 1.831 / 1.884e-3, JOINT 0.03
   // 6.58 / 6.51 / 6.42 / 6.38 / 6.34 / 6.36e-3.
   int blended_surfaces = 30;
-  // Rounds of repulsion between nearest output points within their tangent planes, each
+  // Rounds of Lloyd's relaxation of the output points within their tangent planes, each
   // point then following its own surface (even_spacing.h; 0: off; paper: off). 10 rounds
   // lower CD and P2M on 77 of the learned denoisers' 78 benchmark cells (docs/method.md).
   int even_spacing_rounds = 10;
