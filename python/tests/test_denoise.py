@@ -63,8 +63,9 @@ def test_result_rows_follow_the_kept_input_rows():
     n = len(result.points)
     assert result.normals.shape == (n, 3) and result.index.shape == (n,)
     assert np.all(np.diff(result.index) > 0)
-    # each output point stays close to the input point it comes from
-    assert np.max(np.linalg.norm(result.points - points[result.index], axis=1)) < 0.05
+    # each output point stays close to the input point it comes from: the even spacing moves
+    # it along the surface by about one spacing (0.022 here), at most about three
+    assert np.max(np.linalg.norm(result.points - points[result.index], axis=1)) < 0.1
     np.testing.assert_allclose(np.linalg.norm(result.normals, axis=1), 1.0, atol=1e-9)
     summary = result.summary
     assert summary["input_points"] == 3000 and summary["output_points"] == n
@@ -221,10 +222,12 @@ def test_the_cli_reads_and_writes_pcd_as_open3d_does(tmp_path, lpd_binary):
         written = o3d.io.read_point_cloud(str(output))  # Open3D reads what lpd wrote
         kept = len(written.points)
         assert 2900 < kept <= 3000 and written.has_normals()
-        # each output point keeps the colour of the input point nearest to it
+        # each output point keeps the colour of its own input point, which the even spacing
+        # leaves among the output point's 3 nearest inputs (99% of them here)
         tree = o3d.geometry.KDTreeFlann(cloud)
-        nearest = [tree.search_knn_vector_3d(p, 1)[1][0] for p in np.asarray(written.points)]
-        agree = np.all(np.round(np.asarray(written.colors) * 255) == colours[nearest], axis=1)
+        nearest = np.array([tree.search_knn_vector_3d(p, 3)[1] for p in np.asarray(written.points)])
+        written_colours = np.round(np.asarray(written.colors) * 255)
+        agree = np.any(np.all(written_colours[:, None, :] == colours[nearest], axis=2), axis=1)
         assert agree.mean() > 0.95
 
 
