@@ -82,17 +82,17 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
   for (int r = 0; r < count; ++r) current[r] = points[rows[r]];
   double h = kernel && *kernel > 0.0 ? *kernel : 0.0;
   energy::PointList next(count);
-  std::vector<int> neighbors(static_cast<size_t>(count) * (kNeighbors + 1));
+  constexpr size_t kRow = kNeighbors + 1;  // a point's search results: itself and its nearest
+  std::vector<int> neighbors(count * kRow);
   std::vector<double> squared(neighbors.size());
   std::vector<int> found(count);
   std::vector<double> nearest(count);
   for (int round = 0; round < rounds; ++round) {
     const energy::NearestNeighbors search(current);
-    search.ForEach(count, kNeighbors + 1, num_threads,
-                   [&current](int r) { return current[r]; },
+    search.ForEach(count, kNeighbors + 1, num_threads, [&current](int r) { return current[r]; },
                    [&](int r, const int* indices, const double* distances, int num_found) {
-                     std::copy(indices, indices + num_found, &neighbors[r * (kNeighbors + 1)]);
-                     std::copy(distances, distances + num_found, &squared[r * (kNeighbors + 1)]);
+                     std::copy(indices, indices + num_found, &neighbors[r * kRow]);
+                     std::copy(distances, distances + num_found, &squared[r * kRow]);
                      found[r] = num_found;
                      nearest[r] = num_found > 1 ? std::sqrt(distances[1]) : 0.0;
                    });
@@ -105,8 +105,8 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
     const double margin = kHullMargin * median_nearest;
 #pragma omp parallel for schedule(static) num_threads(num_threads)
     for (int r = 0; r < count; ++r) {
-      next[r] = current[r] + LloydMove(r, current, normals, rows, &neighbors[r * (kNeighbors + 1)],
-                                       &squared[r * (kNeighbors + 1)], found[r], margin, h);
+      next[r] = current[r] + LloydMove(r, current, normals, rows, &neighbors[r * kRow],
+                                       &squared[r * kRow], found[r], margin, h);
     }
     current.swap(next);
   }

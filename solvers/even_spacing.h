@@ -14,16 +14,17 @@
 // with T_i the tangent plane (normal n_i), P_i p_j a neighbour's offset projected into it
 // (neighbours more than 45 degrees off it, across a thin part, left out), a the median distance
 // from a point to its nearest neighbour in that round and h twice that distance in the first
-// round. A point moves at most kStep = 0.4 h a round. Lloyd's centroids tend to a centroidal
-// Voronoi tessellation, near a hexagonal lattice, whose gaps a surface sample can close least;
-// the grown hull ends the cells at a rim half a lattice row beyond the outer points, where a
-// hexagonal lattice's cells end, so that a rim neither spreads out nor shrinks from round to
-// round (docs/method.md, "Even spacing"). The caller carries each moved point along its own
-// fitted surface (FinishDenoising). At a sharp edge, where a neighbour's normal n_j is more than
-// 30 degrees off n_i, the move is projected onto e = n_i x n_j / |n_i x n_j| along the edge
-// (n_j the most different normal); a point whose such neighbours give edges more than 30
-// degrees apart (a corner) stays. In a run on a subsample (subsample_extension.h), the
-// subsample's points are spread, not the points projected onto its surfaces afterwards.
+// round. A point moves at most kStep = 0.4 h a round. Lloyd's rounds tend to a centroidal
+// Voronoi tessellation, near a hexagonal lattice: of all samples of a plane, the one that
+// leaves the smallest gaps. The grown hull ends a rim's cells half a lattice row beyond its
+// outer points, where a hexagonal lattice's cells end, so that a rim neither spreads out nor
+// draws in over the first rounds (docs/method.md, "Even spacing"). The caller carries each
+// moved point along its own fitted surface (FinishDenoising). At a sharp edge, where a
+// neighbour's normal n_j is more than 30 degrees off n_i, the move is projected onto
+// e = n_i x n_j / |n_i x n_j| along the edge (n_j the most different normal); a point whose
+// such neighbours give edges more than 30 degrees apart (a corner) stays. In a run on a
+// subsample (subsample_extension.h), the subsample's points are spread, not the points
+// projected onto its surfaces afterwards.
 #ifndef LPD_SOLVERS_EVEN_SPACING_H_
 #define LPD_SOLVERS_EVEN_SPACING_H_
 
@@ -36,8 +37,8 @@
 namespace lpd::solvers {
 
 // `points` after `rounds` rounds of the relaxation above. Only the points with movable[i] move
-// and bound cells (the others, such as outliers, are left out); `normals` are unit normals, and a
-// point with a zero normal stays. `kernel` (optional): h where it holds a value over 0, else
+// and bound cells (the others, such as outliers, are left out); `normals` are unit normals,
+// and a point with a zero normal stays. `kernel` (optional): h where it holds a value over 0, else
 // h is measured as above and written to it. Deterministic for any thread count.
 energy::PointList SpreadEvenly(const energy::PointList& points, const energy::PointList& normals,
                                const std::vector<uint8_t>& movable, int rounds,
@@ -49,7 +50,6 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
 // inputs lies beyond the rim): the relaxation can carry the outputs at a rim or at a thin
 // wall's top outward, past the end of the data (docs/method.md, "The spacing held within
 // the inputs").
-void SetSpreadDomain(const energy::PointList* inputs, const energy::NeighborGraph* graph, double margin);
 void HoldWithinInputs(const energy::PointList& start, const energy::PointList& inputs,
                       const energy::NeighborGraph& graph, const std::vector<uint8_t>& moved,
                       double margin, int num_threads, energy::PointList* spread);

@@ -54,7 +54,9 @@ std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> HullEdges(
         const Eigen::Vector2d to = points[k] - points[i];
         hull_edge = edge.x() * to.y() - edge.y() * to.x() >= -1e-12;
       }
-      if (hull_edge) edges.emplace_back(points[i], Eigen::Vector2d(edge.y(), -edge.x()).normalized());
+      if (hull_edge) {
+        edges.emplace_back(points[i], Eigen::Vector2d(edge.y(), -edge.x()).normalized());
+      }
     }
   }
   return edges;
