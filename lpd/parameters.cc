@@ -407,6 +407,13 @@ std::vector<Parameter> FinalStepParameters() {
                "part's other side) counts little",
                "", "1"},
               [](O& o) -> int& { return o.final_step.blended_surfaces; }),
+      Flag("settled_blend", kBoth,
+           {kFinal,
+            "project each point once more onto the blend from where the blend put it, and move "
+            "it along the blend's normal by the difference: the first projection, from the "
+            "noisy input point, reads each surface where that point's height puts it",
+            "", "false"},
+           [](O& o) -> bool& { return o.final_step.settled_blend; }),
       Integer("even_spacing", kBoth,
               {kFinal,
                "rounds of Lloyd's relaxation of the output points within their tangent planes, "

@@ -304,8 +304,8 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   // One weighting scale for the solved points and for those a subsample run extends to.
   const double agreement_scale = BlendAgreementScale(problem, surfaces);
   ProjectOntoBlendedSurfaces(problem, surfaces, options.final_step.blended_surfaces,
-                             agreement_scale, options.settings.num_threads, &result.projected,
-                             &result.normals);
+                             agreement_scale, options.final_step.settled_blend,
+                             options.settings.num_threads, &result.projected, &result.normals);
   result.indicators = ComputeIndicators(problem, state.variables, result.summary.mu_l,
                                          options.final_step, options.settings.num_threads);
   clock.Lap("projection");

@@ -209,9 +209,24 @@ bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* cand
   return true;
 }
 
+bool ProjectOntoSettledBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
+                             int count, const Eigen::Vector3d& p, double agreement_scale,
+                             Eigen::Vector3d* projected, Eigen::Vector3d* normal) {
+  if (!ProjectOntoBlend(surfaces, candidates, count, p, agreement_scale, projected, normal)) {
+    return false;
+  }
+  if (count < 2) return true;
+  Eigen::Vector3d again, again_normal;
+  if (ProjectOntoBlend(surfaces, candidates, count, *projected, agreement_scale, &again,
+                       &again_normal)) {
+    *projected += again_normal * again_normal.dot(again - *projected);
+  }
+  return true;
+}
+
 void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
                                 const std::vector<LocalSurface>& surfaces, int blend,
-                                double agreement_scale, int num_threads,
+                                double agreement_scale, bool settled, int num_threads,
                                 energy::PointList* points, energy::PointList* normals) {
   const int n = problem.num_points();
   const int count = std::min(blend, problem.k() + 1);
@@ -225,8 +240,9 @@ void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
       candidates[0] = i;
       std::copy_n(problem.graph.NeighborsOf(i), count - 1, candidates.begin() + 1);
       Eigen::Vector3d projected, normal;
-      if (ProjectOntoBlend(surfaces, candidates.data(), count, problem.points[i],
-                           agreement_scale, &projected, &normal)) {
+      const auto project = settled ? ProjectOntoSettledBlend : ProjectOntoBlend;
+      if (project(surfaces, candidates.data(), count, problem.points[i], agreement_scale,
+                  &projected, &normal)) {
         (*points)[i] = problem.frame.ToInput(projected);
         (*normals)[i] = normal;
       } else {

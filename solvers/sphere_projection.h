@@ -77,14 +77,27 @@ bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* cand
                       int count, const Eigen::Vector3d& p, double agreement_scale,
                       Eigen::Vector3d* projected, Eigen::Vector3d* normal);
 
+// ProjectOntoBlend, settled: the blend's point q is projected onto the same blend once more,
+// giving q' with normal n', and q moves along n' by n'.(q' - q). The first projection still
+// carries the noisy p: each surface's nearest point to p lies off q along the surface by
+// about p's height times the angle between their normals, and the agreement weights read
+// those points; from q, on the blend, the surfaces are read where they nearly meet. Along
+// n' only: a full second projection also slides q along the surface, and where the
+// surfaces curve tightly (a thin shaft) the outputs leave parts of it bare (docs/method.md,
+// "The settled blend"). `normal` stays the first projection's. With one surface, or where
+// q' is not found, it is ProjectOntoBlend.
+bool ProjectOntoSettledBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
+                             int count, const Eigen::Vector3d& p, double agreement_scale,
+                             Eigen::Vector3d* projected, Eigen::Vector3d* normal);
+
 // Each problem point i moved onto the blend of the surfaces of i and of its nearest
 // min(blend, k + 1) - 1 neighbours in N(i) (blend = 1: its own surface, Sec. 3.4), weighted
-// at `agreement_scale` (BlendAgreementScale of the same surfaces; 0: a plain mean). `points`
-// and `normals` in problem order and the input frame; a point without a surface stays where
-// it is with a zero normal.
+// at `agreement_scale` (BlendAgreementScale of the same surfaces; 0: a plain mean), and
+// settled there (ProjectOntoSettledBlend) if `settled`. `points` and `normals` in problem
+// order and the input frame; a point without a surface stays where it is with a zero normal.
 void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
                                 const std::vector<LocalSurface>& surfaces, int blend,
-                                double agreement_scale, int num_threads,
+                                double agreement_scale, bool settled, int num_threads,
                                 energy::PointList* points, energy::PointList* normals);
 
 }  // namespace lpd::solvers

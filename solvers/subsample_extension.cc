@@ -43,8 +43,9 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
   auto extend = [&](int q, const int* nearest, const double*, int found) {
     const energy::Point3 p = query(q);
     Eigen::Vector3d on_surface, normal;
-    if (ProjectOntoBlend(surfaces, nearest, std::min(blend, found), p, agreement_scale,
-                         &on_surface, &normal)) {
+    const auto project = options.settled_blend ? ProjectOntoSettledBlend : ProjectOntoBlend;
+    if (project(surfaces, nearest, std::min(blend, found), p, agreement_scale, &on_surface,
+                &normal)) {
       (*projected)[q] = problem.frame.ToInput(on_surface);
       (*normals)[q] = normal;
     } else {

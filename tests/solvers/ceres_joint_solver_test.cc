@@ -173,11 +173,11 @@ TEST(CeresJointSolver, NoisyCubeAgainstTheAlternatingDriver) {
   // So only the alternating schedule denoises the cube.
   energy::PointList projected, normals;
   const double input_distance = MeanDistance(cube, input);
-  ProjectOntoBlendedSurfaces(problem, TangentPlaneSurfaces(alternating), 1, 0.0, 1, &projected,
-                             &normals);
+  ProjectOntoBlendedSurfaces(problem, TangentPlaneSurfaces(alternating), 1, 0.0, false, 1,
+                             &projected, &normals);
   EXPECT_LT(MeanDistance(cube, projected), 0.8 * input_distance);
-  ProjectOntoBlendedSurfaces(problem, TangentPlaneSurfaces(joint), 1, 0.0, 1, &projected,
-                             &normals);
+  ProjectOntoBlendedSurfaces(problem, TangentPlaneSurfaces(joint), 1, 0.0, false, 1,
+                             &projected, &normals);
   EXPECT_GT(MeanDistance(cube, projected), 10.0 * input_distance);
 }
 

@@ -32,7 +32,7 @@ TEST(SphereProjection, ExactTangentPlanesPutEveryPointBackOnTheSphere) {
   const DisplacedSphere sphere = MakeDisplacedSphere(2000, 0.01, 0.0);
   energy::PointList projected, normals;
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 2),
-                             1, 0.0, 2, &projected, &normals);
+                             1, 0.0, false, 2, &projected, &normals);
   EXPECT_LT(LargestDistanceToTheSphere(projected), 1e-9);
   for (size_t i = 0; i < projected.size(); ++i) {
     ASSERT_NEAR(normals[i].dot(projected[i].normalized()), 1.0, 1e-9) << "normal " << i;
@@ -44,9 +44,9 @@ TEST(SphereProjection, AveragesNoisyPlaneOffsetsOverTheNeighbours) {
   const DisplacedSphere sphere = MakeDisplacedSphere(4000, 0.01, kOffsetNoise);
   energy::PointList on_spheres, on_planes, normals;
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 2),
-                             1, 0.0, 2, &on_spheres, &normals);
-  ProjectOntoBlendedSurfaces(sphere.problem, TangentPlaneSurfaces(sphere.variables), 1, 0.0, 2,
-                             &on_planes, &normals);
+                             1, 0.0, false, 2, &on_spheres, &normals);
+  ProjectOntoBlendedSurfaces(sphere.problem, TangentPlaneSurfaces(sphere.variables), 1, 0.0,
+                             false, 2, &on_planes, &normals);
   // Each plane's own offset error stays in its projection; the sphere fit averages about
   // 15 partners' (measured: RMS about a third of the plane projection's).
   EXPECT_NEAR(RmsDistanceToTheSphere(on_planes), kOffsetNoise, 0.1 * kOffsetNoise);
@@ -128,15 +128,58 @@ TEST(SphereProjection, BlendingNeighboursSurfacesAveragesTheirNoiseFurther) {
   const std::vector<LocalSurface> exact_spheres =
       FitLocalSpheres(exact.problem, exact.variables, 2);
   ProjectOntoBlendedSurfaces(exact.problem, exact_spheres, 30,
-                             BlendAgreementScale(exact.problem, exact_spheres), 2, &blended,
-                             &normals);
+                             BlendAgreementScale(exact.problem, exact_spheres), false, 2,
+                             &blended, &normals);
   EXPECT_LT(LargestDistanceToTheSphere(blended), 1e-9);
   const std::vector<LocalSurface> spheres = FitLocalSpheres(noisy.problem, noisy.variables, 2);
-  ProjectOntoBlendedSurfaces(noisy.problem, spheres, 1, 0.0, 2, &own, &normals);
+  ProjectOntoBlendedSurfaces(noisy.problem, spheres, 1, 0.0, false, 2, &own, &normals);
   ProjectOntoBlendedSurfaces(noisy.problem, spheres, 30,
-                             BlendAgreementScale(noisy.problem, spheres), 2, &blended, &normals);
+                             BlendAgreementScale(noisy.problem, spheres), false, 2, &blended,
+                             &normals);
   // Measured: RMS 0.604e-3 alone, 0.527e-3 blending 5, 0.461e-3 blending all 11 (k = 10).
   EXPECT_LT(RmsDistanceToTheSphere(blended), 0.85 * RmsDistanceToTheSphere(own));
+}
+
+TEST(SphereProjection, TheSettledBlendLiesOnTheSurfacesMeanHeight) {
+  // The plane z = 0 and the unit sphere whose top is at z = 0.05, blended as a plain mean:
+  // over x (y = 0) their mean surface is z(x) = (0.05 - 1 + sqrt(1 - x^2)) / 2. From a point
+  // 0.2 above or below it, the plain blend averages two nearest points that lie apart along
+  // the surface and lands off z(x) (by 2.8e-3 and 7.4e-3); settled, within a fifth of that.
+  std::vector<LocalSurface> surfaces = HorizontalPlanes({0.0, 0.0});
+  surfaces[1].kind = LocalSurface::Kind::kSphere;
+  surfaces[1].center = Eigen::Vector3d(0.0, 0.0, 0.05 - 1.0);
+  surfaces[1].radius = 1.0;
+  const int candidates[] = {0, 1};
+  auto off_the_mean = [](const Eigen::Vector3d& q) {
+    return std::abs(q.z() - (0.05 - 1.0 + std::sqrt(1.0 - q.x() * q.x())) / 2.0);
+  };
+  for (double height : {-0.2, 0.2}) {
+    const Eigen::Vector3d p(0.3, 0.0, height);
+    Eigen::Vector3d plain, settled, plain_normal, settled_normal;
+    ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 2, p, 0.0, &plain, &plain_normal));
+    ASSERT_TRUE(
+        ProjectOntoSettledBlend(surfaces, candidates, 2, p, 0.0, &settled, &settled_normal));
+    EXPECT_GT(off_the_mean(plain), 2e-3) << "height " << height;
+    EXPECT_LT(off_the_mean(settled), 0.2 * off_the_mean(plain)) << "height " << height;
+    EXPECT_NEAR(settled.y(), 0.0, 1e-15);
+    EXPECT_NEAR((settled_normal - plain_normal).norm(), 0.0, 1e-15);  // the first normal
+  }
+  // One surface: the plain projection.
+  Eigen::Vector3d plain, settled, normal;
+  const Eigen::Vector3d p(0.3, 0.1, 0.2);
+  ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates + 1, 1, p, 0.0, &plain, &normal));
+  ASSERT_TRUE(ProjectOntoSettledBlend(surfaces, candidates + 1, 1, p, 0.0, &settled, &normal));
+  EXPECT_EQ(plain, settled);
+}
+
+TEST(SphereProjection, SettlingKeepsPointsOnSurfacesThatAgree) {
+  const DisplacedSphere sphere = MakeDisplacedSphere(2000, 0.01, 0.0);
+  const std::vector<LocalSurface> spheres = FitLocalSpheres(sphere.problem, sphere.variables, 2);
+  energy::PointList settled, normals;
+  ProjectOntoBlendedSurfaces(sphere.problem, spheres, 30,
+                             BlendAgreementScale(sphere.problem, spheres), true, 2, &settled,
+                             &normals);
+  EXPECT_LT(LargestDistanceToTheSphere(settled), 1e-9);
 }
 
 TEST(SphereProjection, CutPairsStayOutOfTheFit) {
@@ -149,11 +192,11 @@ TEST(SphereProjection, CutPairsStayOutOfTheFit) {
   sphere.variables.m[pair] = 0.0;
   energy::PointList projected, normals;
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 1),
-                             1, 0.0, 1, &projected, &normals);
+                             1, 0.0, false, 1, &projected, &normals);
   EXPECT_LT(std::abs(projected[0].norm() - kRadius), 1e-9);
   sphere.variables.m[pair] = 1.0;  // with the pair kept, the tilted plane pulls the fit off
   ProjectOntoBlendedSurfaces(sphere.problem, FitLocalSpheres(sphere.problem, sphere.variables, 1),
-                             1, 0.0, 1, &projected, &normals);
+                             1, 0.0, false, 1, &projected, &normals);
   EXPECT_GT(std::abs(projected[0].norm() - kRadius), 1e-6);
 }
 

@@ -58,8 +58,8 @@ TEST(ExtendToPoints, ASolvedPointGetsItsOwnProjectionAndOutlierScore) {
   const PointIndicators own = ComputeIndicators(problem, sphere.variables, kMuL, options);
   energy::PointList own_points, own_normals, points, normals;
   const double agreement_scale = BlendAgreementScale(problem, surfaces);
-  ProjectOntoBlendedSurfaces(problem, surfaces, options.blended_surfaces, agreement_scale, 2,
-                             &own_points, &own_normals);
+  ProjectOntoBlendedSurfaces(problem, surfaces, options.blended_surfaces, agreement_scale,
+                             options.settled_blend, 2, &own_points, &own_normals);
   PointIndicators extended;
   ExtendToPoints(problem, sphere.variables, surfaces, agreement_scale, own, kMuL, options,
                  problem.points, 2, &points, &normals, &extended);
