@@ -170,6 +170,10 @@ def make_ablations(results, out):
                      "Schedule and initialization ablations of Alg. 1",
                      QUALITY + [("mean distance (1e-3)", "mean_distance_normalized", 1e-3, 3)] +
                      RUN)
+    comparison_table(results, out, "ablation_final_steps",
+                     "The default's final steps, one off at a time",
+                     QUALITY + [("mean distance (1e-3)", "mean_distance_normalized", 1e-3, 3)] +
+                     RUN)
     comparison_table(results, out, "fig6_indicators", "Figs. 6, 7, 15: indicators and error maps",
                      QUALITY + [("outlier precision", "outlier_precision", 1, 3),
                                 ("outlier recall", "outlier_recall", 1, 3),

@@ -9,7 +9,8 @@ configs=("$@")
 if [ ${#configs[@]} -eq 0 ]; then
   configs=(table1_comparison table2_parameters table3_timings fig12_outliers fig13_noise_levels
            fig17_cones solver_validation fig4_orientations fig5_energy fig6_indicators
-           fig9_parameters ablation_gnc ablation_mu_l ablation_schedule)
+           fig9_parameters ablation_gnc ablation_mu_l ablation_schedule
+           ablation_final_steps)
 fi
 for name in "${configs[@]}"; do
   echo "== $name"
