@@ -82,10 +82,9 @@ bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* cand
 // carries the noisy p: each surface's nearest point to p lies off q along the surface by
 // about p's height times the angle between their normals, and the agreement weights read
 // those points; from q, on the blend, the surfaces are read where they nearly meet. Along
-// n' only: a full second projection also slides q along the surface, and where the
-// surfaces curve tightly (a thin shaft) the outputs leave parts of it bare (docs/method.md,
-// "The settled blend"). `normal` stays the first projection's. With one surface, or where
-// q' is not found, it is ProjectOntoBlend.
+// n' only: the full second projection also moves q along the surface, and measured worse on
+// curved meshes (docs/method.md, "The settled blend"). `normal` stays the first
+// projection's. With one surface, or where q' is not found, it is ProjectOntoBlend.
 bool ProjectOntoSettledBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
                              int count, const Eigen::Vector3d& p, double agreement_scale,
                              Eigen::Vector3d* projected, Eigen::Vector3d* normal);
