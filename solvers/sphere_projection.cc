@@ -230,6 +230,7 @@ void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
                                 energy::PointList* points, energy::PointList* normals) {
   const int n = problem.num_points();
   const int count = std::min(blend, problem.k() + 1);
+  const auto project = settled ? ProjectOntoSettledBlend : ProjectOntoBlend;
   points->resize(n);
   normals->resize(n);
 #pragma omp parallel num_threads(num_threads)
@@ -240,7 +241,6 @@ void ProjectOntoBlendedSurfaces(const energy::Problem& problem,
       candidates[0] = i;
       std::copy_n(problem.graph.NeighborsOf(i), count - 1, candidates.begin() + 1);
       Eigen::Vector3d projected, normal;
-      const auto project = settled ? ProjectOntoSettledBlend : ProjectOntoBlend;
       if (project(surfaces, candidates.data(), count, problem.points[i], agreement_scale,
                   &projected, &normal)) {
         (*points)[i] = problem.frame.ToInput(projected);

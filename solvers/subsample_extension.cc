@@ -31,6 +31,7 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
   const int neighbors = problem.k() + 1;
   const PlaneEvidence evidence = ComputePlaneEvidence(problem, v, mu_l, options, num_threads);
   const int blend = std::min(options.blended_surfaces, neighbors);
+  const auto project = options.settled_blend ? ProjectOntoSettledBlend : ProjectOntoBlend;
   projected->resize(count);
   normals->resize(count);
   PointIndicators& out = *query_indicators;
@@ -43,7 +44,6 @@ void ExtendToPoints(const energy::Problem& problem, const energy::Variables& v,
   auto extend = [&](int q, const int* nearest, const double*, int found) {
     const energy::Point3 p = query(q);
     Eigen::Vector3d on_surface, normal;
-    const auto project = options.settled_blend ? ProjectOntoSettledBlend : ProjectOntoBlend;
     if (project(surfaces, nearest, std::min(blend, found), p, agreement_scale, &on_surface,
                 &normal)) {
       (*projected)[q] = problem.frame.ToInput(on_surface);
