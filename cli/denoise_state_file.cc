@@ -151,10 +151,14 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   for (const std::string& name : DenoiseParameterNames()) {
     if (DenoiseParameterApplies(name, options.solver)) names.push_back(name);
   }
+  // The balance the run used: a resumed state keeps no neighbourhood estimates to scale it by
+  // (NeighborhoodSize::smoothing_scale).
+  solvers::DenoiseOptions used = options;
+  used.weights.smoothing_balance *= state.neighborhood.smoothing_scale;
   out.Value(static_cast<uint32_t>(names.size()));
   for (const std::string& name : names) {
     out.Text(name);
-    out.Text(GetDenoiseParameter(name, options));
+    out.Text(GetDenoiseParameter(name, used));
   }
   out.Array(problem.frame.center.data(), 3);
   out.Value(problem.frame.scale);

@@ -246,7 +246,8 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
              {kEnergy,
               "lambda such that the smoothness share of the T system's diagonal is this many "
               "times the stitching share (median over the points; about the squared "
-              "smoothing radius in neighbour hops); 0 keeps lambda",
+              "smoothing radius in neighbour hops, of the radius k_radius_sigmas gives where "
+              "k_wide_noise widens k); 0 keeps lambda",
               "", "0"},
              [](O& o) -> double& { return o.weights.smoothing_balance; }),
       Number("mu_l_noise_sigmas", kBoth,

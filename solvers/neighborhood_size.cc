@@ -301,11 +301,15 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     size.radius_in_sigmas *=
         WideNoiseFactor(size.read_sigma / size.spacing, size.thin_candidate_fraction);
   }
-  const double radius_in_spacings = size.radius_in_sigmas * size.read_sigma / size.spacing;
-  const double chosen = M_PI * radius_in_spacings * radius_in_spacings;
   const int largest = std::min<int>(options.max_k, n - 1);
-  size.k = static_cast<int>(std::lround(std::clamp(chosen, double(options.min_k),
-                                                   double(std::max(options.min_k, largest)))));
+  const auto k_at = [&](double radius_in_sigmas) {
+    const double radius_in_spacings = radius_in_sigmas * size.read_sigma / size.spacing;
+    const double chosen = M_PI * radius_in_spacings * radius_in_spacings;
+    return static_cast<int>(std::lround(
+        std::clamp(chosen, double(options.min_k), double(std::max(options.min_k, largest)))));
+  };
+  size.k = k_at(size.radius_in_sigmas);
+  size.smoothing_scale = double(k_at(options.radius_in_sigmas)) / size.k;
   return size;
 }
 

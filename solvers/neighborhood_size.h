@@ -111,6 +111,13 @@ struct NeighborhoodSize {
   double spacing = 0.0;  // likewise
   double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;
+  // The k that radius c gives over k: below 1 where WideNoiseFactor widened k. The smoothing
+  // balance (energy/data_scaled_weights.h), a squared radius in neighbour hops, is scaled by
+  // it, so that the smoothing reaches as far as the hops of radius c took it: with B at 4 over
+  // the widened hops, curved parts flatten as the iterations go on past the stop (JOINT 0.03:
+  // 2.6% farther from the mesh after 100 iterations; docs/method.md, "Smoothing over widened
+  // neighbourhoods"). 1 for a resumed state, whose saved balance is already scaled.
+  double smoothing_scale = 1.0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
   // Of the probe neighbourhoods, those whose region passes the growth bar
   // (kThinRegionGrowthSeparation): sides too close to split, read as one sheet.

@@ -45,8 +45,8 @@ void ExpectSameBits(const Eigen::Ref<const Eigen::MatrixXd>& a,
   EXPECT_EQ(std::memcmp(a.data(), b.data(), sizeof(double) * a.size()), 0) << what;
 }
 
-TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
-  const energy::PointList points = testing::NoisySphere(3000, 0.01, 11);
+// Runs `points` for 9 iterations in one go, and for 4, saved, read back and resumed for 5.
+void ExpectResumedRunIsTheUninterruptedRun(const energy::PointList& points) {
   const std::string path = TemporaryPath("resume.lpds");
   std::remove(path.c_str());
 
@@ -90,6 +90,18 @@ TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
   ExpectSameBits(resumed.variables.s, full.variables.s, "S");
   EXPECT_EQ(resumed_summary.final_energy.total(), full_summary.final_energy.total());
   EXPECT_EQ(resumed.progress.energy_history, full.progress.energy_history);
+}
+
+TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
+  ExpectResumedRunIsTheUninterruptedRun(testing::NoisySphere(3000, 0.01, 11));
+}
+
+// Noise wider than the spacing widens k, and the smoothing balance is scaled back
+// (NeighborhoodSize::smoothing_scale): the saved balance must be the scaled one.
+TEST(DenoiseStateFile, ResumesWithTheSmoothingBalanceScaledForWidenedNeighbourhoods) {
+  const energy::PointList points = testing::NoisySphere(3000, 0.2, 12);
+  EXPECT_LT(solvers::StartDenoising(points, RunOptions(1)).neighborhood.smoothing_scale, 1.0);
+  ExpectResumedRunIsTheUninterruptedRun(points);
 }
 
 TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {

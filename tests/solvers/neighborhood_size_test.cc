@@ -71,8 +71,12 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
     EXPECT_DOUBLE_EQ(size.radius_in_sigmas, options.radius_in_sigmas * factor);
     NeighborhoodSizeOptions plain = options;  // c as given
     plain.wide_noise = false;
-    EXPECT_EQ(ChooseNeighborhoodSize(noisy, plain, 2).radius_in_sigmas,
-              options.radius_in_sigmas);
+    const NeighborhoodSize unwidened = ChooseNeighborhoodSize(noisy, plain, 2);
+    EXPECT_EQ(unwidened.radius_in_sigmas, options.radius_in_sigmas);
+    EXPECT_EQ(unwidened.smoothing_scale, 1.0);
+    // The smoothing balance follows the widening back: the k of radius c over the k chosen.
+    EXPECT_DOUBLE_EQ(size.smoothing_scale, double(unwidened.k) / size.k) << "sigma " << sigma;
+    if (factor > 1.0) EXPECT_LT(size.smoothing_scale, 1.0) << "sigma " << sigma;
   }
 }
 
