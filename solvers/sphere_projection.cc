@@ -180,32 +180,41 @@ double BlendAgreementScale(const energy::Problem& problem,
 bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
                       int count, const Eigen::Vector3d& p, double agreement_scale,
                       Eigen::Vector3d* projected, Eigen::Vector3d* normal) {
-  Eigen::Vector3d position_sum = Eigen::Vector3d::Zero(), normal_sum = Eigen::Vector3d::Zero();
+  // Each surface's projection of p and its normal, oriented like the first surface's; kept
+  // per thread, so that the blends of a cloud allocate once.
+  thread_local std::vector<Eigen::Vector3d> points, normals;
+  points.clear();
+  normals.clear();
   const LocalSurface* first = nullptr;
-  Eigen::Vector3d reference;
-  double weight_sum = 0.0;
   for (int a = 0; a < count; ++a) {
     const LocalSurface& surface = surfaces[candidates[a]];
     Eigen::Vector3d on_surface, surface_normal;
     if (!surface.Project(p, &on_surface, &surface_normal)) continue;
-    if (first == nullptr) {
-      first = &surface;
-      reference = on_surface;
-    }
-    // 1 for the first surface and wherever the scale is 0 (a plain mean).
-    double weight = 1.0;
-    if (agreement_scale > 0.0) {
-      weight = 1.0 / (1.0 + (on_surface - reference).squaredNorm() / agreement_scale);
-      weight *= weight;
-    }
-    position_sum += weight * on_surface;
-    normal_sum +=
-        weight * (surface_normal.dot(first->orientation) < 0.0 ? -surface_normal : surface_normal);
-    weight_sum += weight;
+    if (first == nullptr) first = &surface;
+    points.push_back(on_surface);
+    normals.push_back(surface_normal.dot(first->orientation) < 0.0 ? -surface_normal
+                                                                    : surface_normal);
   }
   if (first == nullptr) return false;
-  *projected = position_sum / weight_sum;
-  *normal = normal_sum.normalized();
+  // The weighted mean about `reference`; 1 for every surface where the scale is 0.
+  const auto weighted_mean = [&](const Eigen::Vector3d& reference) {
+    Eigen::Vector3d position_sum = Eigen::Vector3d::Zero(), normal_sum = Eigen::Vector3d::Zero();
+    double weight_sum = 0.0;
+    for (size_t a = 0; a < points.size(); ++a) {
+      double weight = 1.0;
+      if (agreement_scale > 0.0) {
+        weight = 1.0 / (1.0 + (points[a] - reference).squaredNorm() / agreement_scale);
+        weight *= weight;
+      }
+      position_sum += weight * points[a];
+      normal_sum += weight * normals[a];
+      weight_sum += weight;
+    }
+    *projected = position_sum / weight_sum;
+    *normal = normal_sum.normalized();
+  };
+  weighted_mean(points.front());
+  if (agreement_scale > 0.0 && points.size() > 1) weighted_mean(Eigen::Vector3d(*projected));
   return true;
 }
 

@@ -71,8 +71,10 @@ double BlendAgreementScale(const energy::Problem& problem,
 // p (normalized frame) moved to the weighted mean of its projections onto surfaces[j] for the
 // `count` indices j of `candidates`, and its normal to the weighted mean of theirs, oriented
 // like that of the first surface that has one; each weighs (1 + d^2 / agreement_scale)^-2,
-// d its projection's distance from the first one's (agreement_scale 0: a plain mean). False
-// when none of them has a surface.
+// d its projection's distance from the first one's, and then, once more, from that weighted
+// mean (one reweighting step of the M-estimator: the first surface's projection carries its
+// own error, and weights centred on it lean the mean its way; docs/method.md, "The blend
+// reweighted"). agreement_scale 0: a plain mean. False when none of them has a surface.
 bool ProjectOntoBlend(const std::vector<LocalSurface>& surfaces, const int* candidates,
                       int count, const Eigen::Vector3d& p, double agreement_scale,
                       Eigen::Vector3d* projected, Eigen::Vector3d* normal);

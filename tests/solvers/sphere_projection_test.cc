@@ -66,14 +66,21 @@ std::vector<LocalSurface> HorizontalPlanes(const std::vector<double>& heights) {
 
 TEST(SphereProjection, TheBlendOfTwoParallelPlanesFollowsTheWeightRule) {
   // p between z = 0.1 (the first candidate) and z = 0.4. At scale 0.36 the second plane, 0.3
-  // from the first one's projection, weighs (1 + 0.09 / 0.36)^-2 = 0.64: p lands at
-  // (0.1 + 0.64 * 0.4) / 1.64 and keeps x and y. At scale 0 the blend is the plain mean.
+  // from the first one's projection, weighs (1 + 0.09 / 0.36)^-2 = 0.64: the mean is
+  // z1 = (0.1 + 0.64 * 0.4) / 1.64. Reweighted about z1, each plane weighs
+  // (1 + (z - z1)^2 / 0.36)^-2, and p lands at their weighted mean, keeping x and y. At scale 0
+  // the blend is the plain mean.
   const std::vector<LocalSurface> surfaces = HorizontalPlanes({0.1, 0.4});
   const int candidates[] = {0, 1};
   Eigen::Vector3d projected, normal;
   ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 2, Eigen::Vector3d(0.5, -0.2, 0.0), 0.36,
                                &projected, &normal));
-  EXPECT_NEAR((projected - Eigen::Vector3d(0.5, -0.2, 0.356 / 1.64)).norm(), 0.0, 1e-15);
+  const double z1 = 0.356 / 1.64;
+  const double w_low = std::pow(1.0 + (z1 - 0.1) * (z1 - 0.1) / 0.36, -2.0);
+  const double w_high = std::pow(1.0 + (0.4 - z1) * (0.4 - z1) / 0.36, -2.0);
+  const double z2 = (0.1 * w_low + 0.4 * w_high) / (w_low + w_high);
+  EXPECT_GT(z2, z1);  // the second step leans less toward the first surface
+  EXPECT_NEAR((projected - Eigen::Vector3d(0.5, -0.2, z2)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((normal - Eigen::Vector3d(0, 0, 1)).norm(), 0.0, 1e-15);
   ASSERT_TRUE(ProjectOntoBlend(surfaces, candidates, 2, Eigen::Vector3d(0.5, -0.2, 0.0), 0.0,
                                &projected, &normal));
