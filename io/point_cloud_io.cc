@@ -94,10 +94,22 @@ std::string Excerpt(const std::string& line) {
   return excerpt;
 }
 
+// Moves `text` past blanks and at most one column separator (a comma or a semicolon, as CSV
+// exports write them) with the blanks after it.
+const char* SkipSeparator(const char* text) {
+  while (*text == ' ' || *text == '\t' || *text == '\r') ++text;
+  if (*text == ',' || *text == ';') {
+    ++text;
+    while (*text == ' ' || *text == '\t' || *text == '\r') ++text;
+  }
+  return text;
+}
+
 // Parses the first three numbers of `text` into `p`; false if there are fewer than three.
 bool ParseThreeNumbers(const char* text, Point3* p, const char** rest = nullptr) {
   const char* cursor = text;
   for (int c = 0; c < 3; ++c) {
+    cursor = SkipSeparator(cursor);
     char* end = nullptr;
     const double value = std::strtod(cursor, &end);
     if (end == cursor) return false;
@@ -122,14 +134,65 @@ bool IsBlankOrComment(const std::string& line) {
 
 constexpr char kNoPoints[] = "the file contains no points";
 
+// The column names of a CSV-style header line ("x,y,z,intensity", "//X,Y,Z,R,G,B" as
+// CloudCompare writes it, "\"X\",\"Y\",\"Z\"" as PDAL does): at least three fields of printable
+// characters, each starting with a letter or an underscore once quotes and a leading "//"
+// are taken off; other characters than letters, digits and underscores become underscores.
+// False for any other line.
+bool ParseHeaderLine(const std::string& line, std::vector<std::string>* names) {
+  names->clear();
+  std::string text = line;
+  const size_t start = text.find_first_not_of(" \t");
+  if (start != std::string::npos && text.compare(start, 2, "//") == 0) text.erase(0, start + 2);
+  std::string field;
+  auto finish = [&] {
+    field.erase(std::remove(field.begin(), field.end(), '"'), field.end());
+    if (field.empty()) return false;
+    const unsigned char first = static_cast<unsigned char>(field[0]);
+    if (!std::isalpha(first) && first != '_') return false;
+    for (char& c : field) {  // a name that the PLY and PCD writers can carry
+      if (!std::isprint(static_cast<unsigned char>(c))) return false;
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    }
+    names->push_back(field);
+    field.clear();
+    return true;
+  };
+  for (const char c : text) {
+    if (c == ' ' || c == '\t' || c == '\r' || c == ',' || c == ';') {
+      if (!field.empty() && !finish()) return false;
+      continue;
+    }
+    field.push_back(c);
+  }
+  if (!field.empty() && !finish()) return false;
+  return names->size() >= 3;
+}
+
+// Whether `line` holds one whole number and nothing else: the point count that Leica's PTS
+// files start with.
+bool IsPointCountLine(const std::string& line) {
+  const size_t begin = line.find_first_not_of(" \t\r");
+  if (begin == std::string::npos) return false;
+  const size_t end = line.find_last_not_of(" \t\r") + 1;
+  return std::all_of(line.begin() + begin, line.begin() + end,
+                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+}
+
 // The next point line of an XYZ file (past blank and comment lines, `number` counting the
-// lines read): its point p and `rest` pointing past x y z in *line; false at the end.
+// lines read): its point p and `rest` pointing past x y z in *line; false at the end. With
+// `header`, a first content line of column names is read into it, and a first line with a
+// point count (PTS) skipped, instead of failing.
 bool NextXyzPoint(const std::string& path, std::istream& in, std::string* line, long* number,
-                  Point3* p, const char** rest) {
+                  Point3* p, const char** rest, std::vector<std::string>* header = nullptr) {
   while (ReadLine(path, in, line, *number + 1)) {
     ++*number;
     if (IsBlankOrComment(*line)) continue;
     if (!ParseThreeNumbers(line->c_str(), p, rest)) {
+      if (header && (IsPointCountLine(*line) || ParseHeaderLine(*line, header))) {
+        header = nullptr;  // one line at most
+        continue;
+      }
       Fail(path, *number, "expected three numbers 'x y z', got '" + Excerpt(*line) + "'");
     }
     CheckFinite(path, *number, *p);
@@ -138,21 +201,41 @@ bool NextXyzPoint(const std::string& path, std::istream& in, std::string* line, 
   return false;
 }
 
-// Calls visit(p, rest) for every point line of an XYZ file, `rest` pointing past x y z.
+// Calls visit(p, rest) for every point line of an XYZ file, `rest` pointing past x y z; the
+// names of a header line before the first point go to `header` (empty without one).
 template <class Visit>
-void VisitXyz(const std::string& path, std::istream& in, Visit visit) {
+void VisitXyz(const std::string& path, std::istream& in, Visit visit,
+              std::vector<std::string>* header = nullptr) {
   std::string line;
   long number = 0;
   Point3 p;
   const char* rest = nullptr;
-  while (NextXyzPoint(path, in, &line, &number, &p, &rest)) visit(p, rest);
+  std::vector<std::string> names;
+  if (!NextXyzPoint(path, in, &line, &number, &p, &rest, &names)) return;
+  if (header) *header = names;
+  do {
+    visit(p, rest);
+  } while (NextXyzPoint(path, in, &line, &number, &p, &rest));
+}
+
+// The name of column `column` (0 for the first after x y z) of an XYZ file with `columns`
+// columns past x y z: the header's, when the header names every column once, else column_N
+// (N counting x as 1).
+std::string XyzColumnName(const std::vector<std::string>& header, size_t columns,
+                          size_t column) {
+  const std::string fallback = "column_" + std::to_string(column + 4);
+  if (header.size() != columns + 3) return fallback;
+  std::vector<std::string> sorted = header;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return fallback;
+  return header[column + 3];
 }
 
 // The numbers of `text` (the columns after x y z); false if one is not a number.
 bool ParseColumns(const char* text, std::vector<double>* columns) {
   columns->clear();
   for (;;) {
-    while (*text == ' ' || *text == '\t' || *text == ',' || *text == '\r') ++text;
+    text = SkipSeparator(text);
     if (*text == '\0' || *text == '#') return true;
     char* end = nullptr;
     const double value = std::strtod(text, &end);
@@ -164,14 +247,15 @@ bool ParseColumns(const char* text, std::vector<double>* columns) {
 
 // Columns 4-6 are read as normals when every line has them and they are unit vectors (as
 // "x y z nx ny nz" exports are). The other columns (all of them after x y z when they are no
-// normals) become attributes column_4, column_5, ... when every line has the same number of
-// them, all numbers; otherwise they are ignored.
+// normals) become attributes when every line has the same number of them, all numbers
+// (named by a header line, else column_4, column_5, ...); otherwise they are ignored.
 PointCloud ReadXyz(const std::string& path, std::istream& in) {
   PointCloud cloud;
   bool normals_on_every_line = true;
   bool same_columns_on_every_line = true;
   std::vector<std::vector<double>> columns;  // per column, one value per point
   std::vector<double> line_columns;
+  std::vector<std::string> header;
   VisitXyz(path, in, [&](const Point3& p, const char* rest) {
     cloud.points.push_back(p);
     if (normals_on_every_line) {
@@ -189,11 +273,11 @@ PointCloud ReadXyz(const std::string& path, std::istream& in) {
     }
     if (cloud.points.size() == 1) columns.resize(line_columns.size());
     for (size_t c = 0; c < line_columns.size(); ++c) columns[c].push_back(line_columns[c]);
-  });
+  }, &header);
   if (!normals_on_every_line) cloud.normals.clear();
   const size_t first = cloud.normals.empty() ? 0 : 3;  // normals are no attribute
   for (size_t c = first; c < columns.size(); ++c) {
-    cloud.attributes.push_back({"column_" + std::to_string(c + 4), "double",
+    cloud.attributes.push_back({XyzColumnName(header, columns.size(), c), "double",
                                 std::move(columns[c])});
   }
   return cloud;
@@ -791,6 +875,7 @@ bool IsXyz(const std::string& extension) {
 struct XyzColumns {
   bool normals = true;
   long columns = -1;
+  std::vector<std::string> header;  // the header line's names, if there is one
 };
 
 XyzColumns ReadXyzColumns(const std::string& path) {
@@ -809,7 +894,7 @@ XyzColumns ReadXyzColumns(const std::string& path) {
     same = ParseColumns(rest, &line_columns) &&
            (count == 1 || static_cast<long>(line_columns.size()) == found.columns);
     found.columns = static_cast<long>(line_columns.size());
-  });
+  }, &found.header);
   if (count == 0) Fail(path, 0, kNoPoints);
   if (!same) found.columns = -1;
   return found;
@@ -824,7 +909,8 @@ bool FirstXyzLineHasColumns(const std::string& path) {
   Point3 p;
   const char* rest = nullptr;
   std::vector<double> columns;
-  return NextXyzPoint(path, in, &line, &number, &p, &rest) &&
+  std::vector<std::string> header;
+  return NextXyzPoint(path, in, &line, &number, &p, &rest, &header) &&
          (!ParseColumns(rest, &columns) || !columns.empty());
 }
 
@@ -851,7 +937,7 @@ std::vector<PointAttribute> StreamedAttributes(const std::string& path) {
     if (!FirstXyzLineHasColumns(path)) return attributes;
     const XyzColumns found = ReadXyzColumns(path);
     for (long c = found.normals ? 3 : 0; c < found.columns; ++c) {
-      attributes.push_back({"column_" + std::to_string(c + 4), "double", {}});
+      attributes.push_back({XyzColumnName(found.header, found.columns, c), "double", {}});
     }
   } else {
     for (const PointAttribute& attribute : ReadPointCloud(path).attributes) {

@@ -55,6 +55,9 @@ text("scientific.xyz", noisy, fmt=lambda c: "%.6E" % c)
 text("comments.xyz", [["# exported"]] + noisy[:700] + [["#", "gap"]] + noisy[700:], fmt=str)
 text("normals.xyz", [p + q for p, q in zip(noisy, sphere)])
 text("colours.xyz", [p + [255, 128, 0] for p in noisy], fmt=str)
+text("csv_header.txt", [["//X", "Y", "Z", "R", "G", "B"]] + [p + [255, 128, 0] for p in noisy],
+     sep=",", fmt=str)
+text("scan.pts", [[len(noisy)]] + [p + [7] for p in noisy], fmt=str)
 text("scale_1e200.xyz", [[c * 1e200 for c in p] for p in noisy])
 text("scale_1e-200.xyz", [[c * 1e-200 for c in p] for p in noisy])
 text("scale_1e300_offset.xyz", [[c * 1e300 + 1e305 for c in p] for p in noisy])
@@ -111,6 +114,8 @@ accept scientific_notation "$dir/scientific.xyz"
 accept comment_lines "$dir/comments.xyz"
 accept xyz_unit_normals_used "$dir/normals.xyz" --initialization=input_normals
 accept xyz_colour_columns "$dir/colours.xyz"
+accept csv_with_a_header_line "$dir/csv_header.txt"
+accept pts_with_its_point_count "$dir/scan.pts"
 accept scale_1e200 "$dir/scale_1e200.xyz"
 accept scale_1e-200 "$dir/scale_1e-200.xyz"
 accept scale_1e300_offset_1e305 "$dir/scale_1e300_offset.xyz"

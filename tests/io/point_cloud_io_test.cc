@@ -182,6 +182,57 @@ TEST_F(PointCloudIoTest, XyzColumnsBecomeAttributesWhenEveryLineHasThem) {
   EXPECT_TRUE(io::ReadPointCloud(Write("ragged.xyz", "0 0 0 1\n1 1 1\n")).attributes.empty());
 }
 
+// CSV-style text: commas or semicolons between the columns, a header line of names (as
+// CloudCompare, PDAL and spreadsheets write), the point count of Leica's PTS; the streamed
+// path (tiles) names the columns as the whole-file one does.
+TEST_F(PointCloudIoTest, XyzReadsCsvSeparatorsHeadersAndPtsCounts) {
+  const std::string csv = Write("scan.txt", "x,y,z,intensity\n1,2,3,40\n4.5,5,6,41\n");
+  const io::PointCloud cloud = io::ReadPointCloud(csv);
+  ASSERT_EQ(cloud.points.size(), 2u);
+  EXPECT_EQ(cloud.points[1], energy::Point3(4.5, 5, 6));
+  ASSERT_EQ(cloud.attributes.size(), 1u);
+  EXPECT_EQ(cloud.attributes[0].name, "intensity");
+  EXPECT_EQ(cloud.attributes[0].values, (std::vector<double>{40, 41}));
+  const std::vector<io::PointAttribute> streamed = io::StreamedAttributes(csv);
+  ASSERT_EQ(streamed.size(), 1u);
+  EXPECT_EQ(streamed[0].name, "intensity");
+  std::vector<double> values;
+  io::ForEachPointWithAttributes(csv, streamed, [&](const energy::Point3&, const double* v) {
+    values.push_back(v[0]);
+  });
+  EXPECT_EQ(values, (std::vector<double>{40, 41}));
+
+  const io::PointCloud compare =
+      io::ReadPointCloud(Write("cc.txt", "//X,Y,Z,R,G,B\n0;0;0;255;0;9\n1; 1; 1; 7; 8; 9\n"));
+  ASSERT_EQ(compare.attributes.size(), 3u);
+  EXPECT_EQ(compare.attributes[0].name, "R");
+  EXPECT_EQ(compare.attributes[2].values, (std::vector<double>{9, 9}));
+  EXPECT_EQ(compare.points[1], energy::Point3(1, 1, 1));
+  const io::PointCloud quoted =
+      io::ReadPointCloud(Write("pdal.txt", "\"X\",\"Y\",\"Z\",\"Return-Number\"\n1,2,3,1\n"));
+  ASSERT_EQ(quoted.attributes.size(), 1u);
+  EXPECT_EQ(quoted.attributes[0].name, "Return_Number");
+  // Names that do not fit the columns (or repeat) leave the columns numbered.
+  EXPECT_EQ(io::ReadPointCloud(Write("short.txt", "x y z\n1 2 3 4\n")).attributes[0].name,
+            "column_4");
+  EXPECT_EQ(io::ReadPointCloud(Write("twice.txt", "x y z a a\n1 2 3 4 5\n")).attributes[1].name,
+            "column_5");
+
+  const io::PointCloud pts = io::ReadPointCloud(Write("scan.pts", "2\n1 2 3 9\n4 5 6 8\n"));
+  ASSERT_EQ(pts.points.size(), 2u);
+  EXPECT_EQ(pts.points[0], energy::Point3(1, 2, 3));
+
+  // One such line, before the first point only; a count or names later is malformed.
+  EXPECT_NE(ReadError(Write("late.txt", "1 2 3\nx y z\n")).find(":2: expected three numbers"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("two.txt", "x y z\nx y z\n1 2 3\n")).find(":2: expected"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("count.txt", "1 2 3\n5\n")).find(":2: expected"), std::string::npos);
+  EXPECT_NE(ReadError(Write("words.txt", "x y\n1 2 3\n")).find(":1: expected"),
+            std::string::npos);
+  EXPECT_NE(ReadError(Write("header_only.txt", "x,y,z\n")).find("no points"), std::string::npos);
+}
+
 // The OFF variants: 4OFF divides by w, nOFF reads its dimension line, C/N/ST carry extra
 // numbers; a header claiming more vertices than there are cannot read faces as points.
 TEST_F(PointCloudIoTest, OffVariantsAreReadOrRefusedByName) {
