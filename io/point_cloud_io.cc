@@ -134,6 +134,11 @@ bool IsBlankOrComment(const std::string& line) {
 
 constexpr char kNoPoints[] = "the file contains no points";
 
+// The extensions of point text files (x y z per line, ReadXyz).
+bool IsXyz(const std::string& extension) {
+  return extension == "xyz" || extension == "txt" || extension == "pts" || extension == "csv";
+}
+
 // The column names of a CSV-style header line ("x,y,z,intensity", "//X,Y,Z,R,G,B" as
 // CloudCompare writes it, "\"X\",\"Y\",\"Z\"" as PDAL does): at least three fields of printable
 // characters, each starting with a letter or an underscore once quotes and a leading "//"
@@ -802,7 +807,7 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
                           const std::string& name) {
   SkipByteOrderMark(name, in);
   PointCloud cloud;
-  if (extension == "xyz" || extension == "txt" || extension == "pts") {
+  if (IsXyz(extension)) {
     cloud = ReadXyz(name, in);
   } else if (extension == "ply") {
     cloud = ReadPly(name, in);
@@ -816,7 +821,7 @@ PointCloud ReadPointCloud(std::istream& in, const std::string& extension,
     cloud = ReadPcd(name, in);
   } else {
     Fail(name, 0, "unknown point-cloud format '." + extension +
-                      "' (expected .xyz, .txt, .pts, .ply, .pcd, .off, .obj or .las)");
+                      "' (expected .xyz, .txt, .pts, .csv, .ply, .pcd, .off, .obj or .las)");
   }
   if (cloud.points.empty()) {
     Fail(name, 0, cloud.skipped_points > 0 ? "every point has a NaN coordinate (no return)"
@@ -842,7 +847,7 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
     VisitLasRecords(path, in, header, [&](const Point3& p, const double*) { visit(p); });
     return;
   }
-  if (extension != "xyz" && extension != "txt" && extension != "pts" && extension != "ply") {
+  if (!IsXyz(extension) && extension != "ply") {
     for (const Point3& p : ReadPoints(path)) visit(p);
     return;
   }
@@ -865,10 +870,6 @@ void ForEachPoint(const std::string& path, const std::function<void(const Point3
 }
 
 namespace {
-
-bool IsXyz(const std::string& extension) {
-  return extension == "xyz" || extension == "txt" || extension == "pts";
-}
 
 // ReadXyz's rules for its columns: whether every line has unit normals in columns 4-6, and
 // the number of columns when every line has as many (else -1).

@@ -203,7 +203,7 @@ TEST_F(PointCloudIoTest, XyzReadsCsvSeparatorsHeadersAndPtsCounts) {
   EXPECT_EQ(values, (std::vector<double>{40, 41}));
 
   const io::PointCloud compare =
-      io::ReadPointCloud(Write("cc.txt", "//X,Y,Z,R,G,B\n0;0;0;255;0;9\n1; 1; 1; 7; 8; 9\n"));
+      io::ReadPointCloud(Write("cc.csv", "//X,Y,Z,R,G,B\n0;0;0;255;0;9\n1; 1; 1; 7; 8; 9\n"));
   ASSERT_EQ(compare.attributes.size(), 3u);
   EXPECT_EQ(compare.attributes[0].name, "R");
   EXPECT_EQ(compare.attributes[2].values, (std::vector<double>{9, 9}));
