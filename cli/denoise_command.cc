@@ -26,13 +26,14 @@
 #include "solvers/denoise_point_set.h"
 
 DEFINE_string(output, "",
-              "output file (.ply or .pcd with normals and indicators, .las, or .xyz); also -o");
+              "output file (.ply or .pcd with normals and indicators, .las, .xyz, or .csv with "
+              "a header line); also -o");
 DEFINE_string(input_format, "",
-              "format of INPUT (xyz, ply, las, pcd, off, obj) when its extension does not say "
-              "it; needed for '-', standard input");
+              "format of INPUT (xyz, csv, ply, las, pcd, off, obj) when its extension does not "
+              "say it; needed for '-', standard input");
 DEFINE_string(output_format, "",
-              "format of OUTPUT (ply, pcd, las, xyz) when its extension does not say it; needed "
-              "for '-o -', standard output (the summary then goes to stderr)");
+              "format of OUTPUT (ply, pcd, las, xyz, csv) when its extension does not say it; "
+              "needed for '-o -', standard output (the summary then goes to stderr)");
 DEFINE_bool(overwrite, false, "replace OUTPUT (and the --save_state file) if it already exists");
 DEFINE_string(save_state, "",
               "after the iterations, save the optimizer's state (H, T, L, M, S, the k-NN "

@@ -778,8 +778,8 @@ namespace {
 std::string InputFormat(const std::string& path, const std::string& format) {
   if (!format.empty()) return format;
   if (path == kStandardStream) {
-    throw std::runtime_error("reading standard input ('-') needs --input_format (xyz, ply, "
-                             "las, pcd, off or obj)");
+    throw std::runtime_error("reading standard input ('-') needs --input_format (xyz, csv, "
+                             "ply, las, pcd, off or obj)");
   }
   return FileExtension(path);
 }
@@ -1016,8 +1016,8 @@ void ForEachPointWithAttributes(
 
 std::string OutputFormat(const std::string& path, const std::string& format) {
   const std::string chosen = format.empty() ? FileExtension(path) : format;
-  if (chosen == "ply" || chosen == "xyz" || chosen == "txt" || chosen == "las" ||
-      chosen == "pcd") {
+  if (chosen == "ply" || chosen == "xyz" || chosen == "txt" || chosen == "csv" ||
+      chosen == "las" || chosen == "pcd") {
     return chosen;
   }
   if (chosen == "laz") {
@@ -1025,11 +1025,11 @@ std::string OutputFormat(const std::string& path, const std::string& format) {
                              "supported; write .las and compress it with `laszip`");
   }
   if (path == kStandardStream && format.empty()) {
-    throw std::runtime_error("writing standard output ('-') needs --output_format (ply, xyz, las "
-                             "or pcd)");
+    throw std::runtime_error("writing standard output ('-') needs --output_format (ply, xyz, "
+                             "csv, las or pcd)");
   }
   throw std::runtime_error("cannot write '" + path + "': the output format must be ply, xyz, "
-                           "txt, las or pcd, got '" + chosen + "'");
+                           "txt, csv, las or pcd, got '" + chosen + "'");
 }
 
 PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
@@ -1039,6 +1039,7 @@ PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
     : count_(count), with_normals_(with_normals) {
   const std::string chosen = OutputFormat(path, format);
   ply_ = chosen == "ply";
+  separator_ = chosen == "csv" ? ',' : ' ';
   if (chosen == "las" || chosen == "pcd") {
     throw std::runtime_error("cannot write '" + path + "' point by point: LAS and PCD are "
                              "written whole (WritePointCloud); write PLY or XYZ here");
@@ -1053,6 +1054,11 @@ PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
   std::ofstream& out = file_->stream();
   if (!ply_) {
     out.precision(17);
+    if (separator_ == ',') {  // a header line of names, as ReadXyz reads one
+      out << "x,y,z";
+      for (const auto& field : fields) out << ',' << field.first;
+      out << '\n';
+    }
     return;
   }
   if (!HostIsLittleEndian()) throw std::runtime_error("big-endian hosts are not supported");
@@ -1128,12 +1134,13 @@ void PointWriter::Write(const Point3& p, const Point3& normal, const double* val
   ++written_;
   std::ofstream& out = file_->stream();
   if (!ply_) {
-    out << p.x() << ' ' << p.y() << ' ' << p.z();
+    out << p.x() << separator_ << p.y() << separator_ << p.z();
     for (size_t f = 0; f < types_.size(); ++f) {
+      out << separator_;
       if (PlyTypeIsInteger(types_[f])) {
-        out << ' ' << static_cast<long long>(Converted<int64_t>(values[f]));
+        out << static_cast<long long>(Converted<int64_t>(values[f]));
       } else {
-        out << ' ' << (types_[f] == "float" ? static_cast<float>(values[f]) : values[f]);
+        out << (types_[f] == "float" ? static_cast<float>(values[f]) : values[f]);
       }
     }
     out << '\n';

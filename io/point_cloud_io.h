@@ -93,12 +93,13 @@ void WritePointCloud(const std::string& path, const PointCloud& cloud, bool over
                      const std::string& format = "");
 
 // The format written to `path`: `format` when given, else the extension; throws
-// std::runtime_error naming the problem if it is not ply, xyz, txt, las or pcd.
+// std::runtime_error naming the problem if it is not ply, xyz, txt, csv, las or pcd.
 std::string OutputFormat(const std::string& path, const std::string& format);
 
 // Writes a point set point by point in WritePointCloud's layout: binary PLY with x y z
 // (double), nx ny nz (float) when `with_normals`, then the `fields` (name, PLY type) in order;
-// or XYZ text: x y z and the fields' values. `count` points must be written before Commit,
+// or XYZ text: x y z and the fields' values (CSV: comma-separated, after a header line of
+// the names, "x,y,z,..."). `count` points must be written before Commit,
 // which puts the file in place (AtomicOutputFile; nothing appears without it).
 class PointWriter {
  public:
@@ -114,6 +115,7 @@ class PointWriter {
  private:
   std::unique_ptr<AtomicOutputFile> file_;
   bool ply_;
+  char separator_;  // between a text line's values
   size_t count_;
   size_t written_ = 0;
   bool with_normals_;

@@ -233,6 +233,29 @@ TEST_F(PointCloudIoTest, XyzReadsCsvSeparatorsHeadersAndPtsCounts) {
   EXPECT_NE(ReadError(Write("header_only.txt", "x,y,z\n")).find("no points"), std::string::npos);
 }
 
+// CSV out: a header line of the names, then comma-separated values, read back as written.
+TEST_F(PointCloudIoTest, CsvOutputRoundTripsWithItsHeader) {
+  io::PointCloud cloud;
+  cloud.points = {{1.5, -2, 3}, {4, 5, 6.25}};
+  cloud.attributes.push_back({"intensity", "ushort", {7, 65535}});
+  cloud.attributes.push_back({"gps_time", "double", {0.125, 1e9}});
+  const std::string path = (directory_ / "out.csv").string();
+  io::WritePointCloud(path, cloud, false);
+  std::ifstream in(path);
+  std::string header, first;
+  std::getline(in, header);
+  std::getline(in, first);
+  EXPECT_EQ(header, "x,y,z,intensity,gps_time");
+  EXPECT_EQ(first, "1.5,-2,3,7,0.125");
+  const io::PointCloud back = io::ReadPointCloud(path);
+  EXPECT_EQ(back.points, cloud.points);
+  ASSERT_EQ(back.attributes.size(), 2u);
+  EXPECT_EQ(back.attributes[1].name, "gps_time");
+  EXPECT_EQ(back.attributes[0].values, cloud.attributes[0].values);
+  EXPECT_EQ(back.attributes[1].values, cloud.attributes[1].values);
+  EXPECT_EQ(io::OutputFormat("-", "csv"), "csv");
+}
+
 // The OFF variants: 4OFF divides by w, nOFF reads its dimension line, C/N/ST carry extra
 // numbers; a header claiming more vertices than there are cannot read faces as points.
 TEST_F(PointCloudIoTest, OffVariantsAreReadOrRefusedByName) {
