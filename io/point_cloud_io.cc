@@ -1056,7 +1056,12 @@ PointWriter::PointWriter(const std::string& path, bool overwrite, size_t count,
     out.precision(17);
     if (separator_ == ',') {  // a header line of names, as ReadXyz reads one
       out << "x,y,z";
-      for (const auto& field : fields) out << ',' << field.first;
+      for (const auto& field : fields) {
+        std::string name = field.first;  // a name the header line can hold as one field
+        std::replace_if(name.begin(), name.end(), [](char c) { return c == ',' || c == '"'; },
+                        '_');
+        out << ',' << name;
+      }
       out << '\n';
     }
     return;

@@ -239,18 +239,20 @@ TEST_F(PointCloudIoTest, CsvOutputRoundTripsWithItsHeader) {
   cloud.points = {{1.5, -2, 3}, {4, 5, 6.25}};
   cloud.attributes.push_back({"intensity", "ushort", {7, 65535}});
   cloud.attributes.push_back({"gps_time", "double", {0.125, 1e9}});
+  cloud.attributes.push_back({"a,b", "float", {1, 2}});  // a PLY name may hold a comma
   const std::string path = (directory_ / "out.csv").string();
   io::WritePointCloud(path, cloud, false);
   std::ifstream in(path);
   std::string header, first;
   std::getline(in, header);
   std::getline(in, first);
-  EXPECT_EQ(header, "x,y,z,intensity,gps_time");
-  EXPECT_EQ(first, "1.5,-2,3,7,0.125");
+  EXPECT_EQ(header, "x,y,z,intensity,gps_time,a_b");
+  EXPECT_EQ(first, "1.5,-2,3,7,0.125,1");
   const io::PointCloud back = io::ReadPointCloud(path);
   EXPECT_EQ(back.points, cloud.points);
-  ASSERT_EQ(back.attributes.size(), 2u);
+  ASSERT_EQ(back.attributes.size(), 3u);
   EXPECT_EQ(back.attributes[1].name, "gps_time");
+  EXPECT_EQ(back.attributes[2].name, "a_b");
   EXPECT_EQ(back.attributes[0].values, cloud.attributes[0].values);
   EXPECT_EQ(back.attributes[1].values, cloud.attributes[1].values);
   EXPECT_EQ(io::OutputFormat("-", "csv"), "csv");
