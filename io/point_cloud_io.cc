@@ -223,17 +223,19 @@ void VisitXyz(const std::string& path, std::istream& in, Visit visit,
   } while (NextXyzPoint(path, in, &line, &number, &p, &rest));
 }
 
-// The name of column `column` (0 for the first after x y z) of an XYZ file with `columns`
-// columns past x y z: the header's, when the header names every column once, else column_N
-// (N counting x as 1).
-std::string XyzColumnName(const std::vector<std::string>& header, size_t columns,
-                          size_t column) {
-  const std::string fallback = "column_" + std::to_string(column + 4);
-  if (header.size() != columns + 3) return fallback;
+// The names of the `columns` columns of an XYZ file past x y z: the header's, when the
+// header names every column once, else column_4, column_5, ... (counting x as 1).
+std::vector<std::string> XyzColumnNames(const std::vector<std::string>& header,
+                                        size_t columns) {
   std::vector<std::string> sorted = header;
   std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return fallback;
-  return header[column + 3];
+  if (header.size() == columns + 3 &&
+      std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) {
+    return std::vector<std::string>(header.begin() + 3, header.end());
+  }
+  std::vector<std::string> names;
+  for (size_t c = 0; c < columns; ++c) names.push_back("column_" + std::to_string(c + 4));
+  return names;
 }
 
 // The numbers of `text` (the columns after x y z); false if one is not a number.
@@ -281,9 +283,9 @@ PointCloud ReadXyz(const std::string& path, std::istream& in) {
   }, &header);
   if (!normals_on_every_line) cloud.normals.clear();
   const size_t first = cloud.normals.empty() ? 0 : 3;  // normals are no attribute
+  const std::vector<std::string> names = XyzColumnNames(header, columns.size());
   for (size_t c = first; c < columns.size(); ++c) {
-    cloud.attributes.push_back({XyzColumnName(header, columns.size(), c), "double",
-                                std::move(columns[c])});
+    cloud.attributes.push_back({names[c], "double", std::move(columns[c])});
   }
   return cloud;
 }
@@ -937,8 +939,11 @@ std::vector<PointAttribute> StreamedAttributes(const std::string& path) {
   } else if (IsXyz(extension)) {
     if (!FirstXyzLineHasColumns(path)) return attributes;
     const XyzColumns found = ReadXyzColumns(path);
-    for (long c = found.normals ? 3 : 0; c < found.columns; ++c) {
-      attributes.push_back({XyzColumnName(found.header, found.columns, c), "double", {}});
+    if (found.columns <= 0) return attributes;
+    const std::vector<std::string> names =
+        XyzColumnNames(found.header, static_cast<size_t>(found.columns));
+    for (size_t c = found.normals ? 3 : 0; c < names.size(); ++c) {
+      attributes.push_back({names[c], "double", {}});
     }
   } else {
     for (const PointAttribute& attribute : ReadPointCloud(path).attributes) {
