@@ -403,11 +403,17 @@ std::vector<Parameter> FinalStepParameters() {
       Integer("blended_surfaces", kBoth,
               {kFinal,
                "a point moves to the weighted mean of its projections onto the surfaces of "
-               "itself and its nearest neighbours, this many in all (at most k + 1); a surface "
-               "that moves it far from where its own surface does (an edge's other face, a thin "
-               "part's other side) counts little",
+               "itself and its nearest neighbours, this many in all at least (at most k + 1); "
+               "a surface that moves it far from where its own surface does (an edge's other "
+               "face, a thin part's other side) counts little",
                "", "1"},
               [](O& o) -> int& { return o.final_step.blended_surfaces; }),
+      Number("blended_share", kBoth,
+             {kFinal,
+              "or this share of the cloud's points, when that is more (at most k + 1): a "
+              "denser cloud blends the surfaces of a patch of the same share of its shape",
+              "", "0"},
+             [](O& o) -> double& { return o.final_step.blended_share; }),
       Flag("settled_blend", kBoth,
            {kFinal,
             "project each point once more onto the blend from where the blend put it, and move "

@@ -702,9 +702,11 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
         " (give a smaller --k)");
   }
   clock.Lap("far points and repeats");
+  DenoiseOptions for_cloud = options;
+  for_cloud.final_step = options.final_step.ForCloudOf(rows.size());
   DenoiseResult result;
   if (rows.size() == points.size()) {
-    result = DenoiseNearPoints(points, options, hooks, normals);
+    result = DenoiseNearPoints(points, for_cloud, hooks, normals);
   } else {
     energy::PointList solved_points, solved_normals;
     for (int i : rows) {
@@ -712,7 +714,7 @@ DenoiseResult DenoisePointSet(const energy::PointList& points, const DenoiseOpti
       if (normals) solved_normals.push_back((*normals)[i]);
     }
     result = ToAllInputPoints(
-        DenoiseNearPoints(solved_points, options, hooks, normals ? &solved_normals : nullptr),
+        DenoiseNearPoints(solved_points, for_cloud, hooks, normals ? &solved_normals : nullptr),
         rows, far, first, points, options.final_step.remove_outliers);
   }
   result.num_duplicates = static_cast<int>(repeats - near_repeats);
@@ -729,7 +731,10 @@ DenoiseResult ContinueDenoising(DenoiseState state, const DenoiseOptions& option
   const Clock::time_point start = Clock::now();
   SolverSummary summary = MinimizeFromState(options, &state, hooks.progress);
   if (hooks.on_minimized) hooks.on_minimized(state);
-  DenoiseResult result = FinishDenoising(state, options, std::move(summary));
+  DenoiseOptions for_cloud = options;  // the cloud the first pass solved, as DenoisePointSet
+  for_cloud.final_step =
+      options.final_step.ForCloudOf(state.order.size() + state.left_out.size());
+  DenoiseResult result = FinishDenoising(state, for_cloud, std::move(summary));
   if (options.mark_outliers) MarkRemovedPoints(InputPointsOf(state), &result);
   result.total_seconds = SecondsSince(start);
   return result;

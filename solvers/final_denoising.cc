@@ -25,6 +25,16 @@ bool ParseProjection(const std::string& name, Projection* projection) {
   return ParseByName(name, kProjections, ProjectionName, projection);
 }
 
+FinalDenoisingOptions FinalDenoisingOptions::ForCloudOf(size_t points) const {
+  FinalDenoisingOptions options = *this;
+  const double share = std::round(blended_share * static_cast<double>(points));
+  if (share > blended_surfaces) {
+    options.blended_surfaces = static_cast<int>(std::min(share, 1e9));
+  }
+  options.blended_share = 0.0;
+  return options;
+}
+
 bool FinalDenoisingOptions::IsValid(std::string* error) const {
   std::ostringstream out;
   if (!InUnitInterval(outlier_fraction)) {
@@ -37,6 +47,8 @@ bool FinalDenoisingOptions::IsValid(std::string* error) const {
     out << "height_smoothing must be in [0, 1000], got " << height_smoothing_pairs;
   } else if (blended_surfaces < 1) {
     out << "blended_surfaces must be at least 1, got " << blended_surfaces;
+  } else if (!(blended_share >= 0.0 && blended_share <= 1.0)) {
+    out << "blended_share must be in [0, 1], got " << blended_share;
   } else if (!InUnitInterval(feature_line_threshold)) {
     out << "feature_threshold must be in (0, 1], got " << feature_line_threshold;
   } else if (!(feature_fraction >= 0.0 && feature_fraction < 1.0)) {

@@ -31,6 +31,7 @@
 #ifndef LPD_SOLVERS_FINAL_DENOISING_H_
 #define LPD_SOLVERS_FINAL_DENOISING_H_
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -51,10 +52,12 @@ bool ParseProjection(const std::string& name, Projection* projection);
 struct FinalDenoisingOptions {
   Projection projection = Projection::kSphere;
   // A point moves to the mean of its projections onto the surfaces of itself and its nearest
-  // neighbours, this many in all, at most k + 1 (paper: 1, its own plane). 8 / 12 / 20 / 30
-  // / 45 / all: FANDISK 0.03 1.829 / 1.811 / 1.800 / 1.804 / 1.831 / 1.884e-3, JOINT 0.03
-  // 6.58 / 6.51 / 6.42 / 6.38 / 6.34 / 6.36e-3.
+  // neighbours, this many in all at least, at most k + 1 (paper: 1, its own plane).
   int blended_surfaces = 30;
+  // ... or this share of the cloud's points when that is more (paper: 0): a denser cloud
+  // blends the surfaces of a patch of the same share of the shape (docs/method.md, "The
+  // blend of surfaces").
+  double blended_share = 0.001;
   // Settle each point on the blend: project it once more from where the blend put it, along
   // the normal (ProjectOntoSettledBlend; paper: off, one surface). Lowers the mean distance
   // on all seven rows of Table 1 (JOINT 0.03 4.31 -> 4.12e-3; docs/method.md).
@@ -95,6 +98,10 @@ struct FinalDenoisingOptions {
   bool snap_features = false;
   FeatureSnappingOptions snapping;
 
+  // These options for a cloud of `points` points: blended_surfaces the larger of the two
+  // counts above, blended_share 0 (so that a part of the cloud, a tile or a later pass,
+  // blends as the whole cloud does).
+  FinalDenoisingOptions ForCloudOf(size_t points) const;
   bool IsValid(std::string* error) const;
 };
 

@@ -15,7 +15,7 @@
 //
 // Each fit still carries the noise of its own neighbourhood. By default a point is therefore
 // moved to the mean of its projections onto the surfaces of itself and of its nearest
-// neighbours (30 surfaces in all, FinalDenoisingOptions::blended_surfaces): a partition of
+// neighbours (30 surfaces or more, FinalDenoisingOptions::blended_surfaces): a partition of
 // unity over overlapping local fits, as in MLS. On the shared FANDISK and JOINT inputs it
 // lowers the mean distance by 4-8% (docs/method.md).
 #ifndef LPD_SOLVERS_SPHERE_PROJECTION_H_

@@ -184,6 +184,8 @@ TiledRun DenoiseInTiles(const std::string& input, const energy::PointList& point
     store = std::make_unique<TileStore>(directory, /*owner=*/false);
   }
   run.num_points = static_cast<size_t>(plan[1 + name_length]);
+  // Every tile blends as many surfaces as the whole cloud would.
+  options.final_step = options.final_step.ForCloudOf(run.num_points);
   const solvers::TileTree tree = solvers::TileTree::Unflatten(
       std::vector<double>(plan.begin() + 2 + name_length, plan.end()));
   run.tiles = tree.num_tiles;

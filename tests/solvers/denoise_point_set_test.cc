@@ -3,6 +3,7 @@
 #include "solvers/denoise_point_set.h"
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -158,6 +159,58 @@ TEST(DenoisePointSet, DegenerateInputsGiveFiniteResultsOrClearErrors) {
   EXPECT_THROW(DenoisePointSet(PointList(50, Point3(1, 1, 1)), options), std::invalid_argument);
   EXPECT_THROW(DenoisePointSet(PointList(line.begin(), line.begin() + 6), options),
                std::invalid_argument);
+}
+
+// The blend count from the share of the cloud (FinalDenoisingOptions::ForCloudOf): rounded,
+// never below blended_surfaces, counted once (a part of the cloud keeps the whole's count).
+TEST(DenoisePointSet, TheBlendCountFollowsTheShareOfTheCloud) {
+  FinalDenoisingOptions options;
+  options.blended_surfaces = 30;
+  options.blended_share = 0.003;
+  EXPECT_EQ(options.ForCloudOf(10000).blended_surfaces, 30);
+  EXPECT_EQ(options.ForCloudOf(4000).blended_surfaces, 30);
+  EXPECT_EQ(options.ForCloudOf(25894).blended_surfaces, 78);
+  EXPECT_EQ(options.ForCloudOf(50000).blended_surfaces, 150);
+  EXPECT_EQ(options.ForCloudOf(50000).blended_share, 0.0);
+  EXPECT_EQ(options.ForCloudOf(50000).ForCloudOf(10).blended_surfaces, 150);
+  options.blended_share = 0.0;
+  EXPECT_EQ(options.ForCloudOf(1000000).blended_surfaces, 30);
+}
+
+// A run with a share blends as a run given the count: the count of its distinct points
+// (copies of a point do not raise it), and a resumed run (ContinueDenoising) the same.
+TEST(DenoisePointSet, AShareBlendsAsTheCountOfTheDistinctPoints) {
+  PointList input = testing::NoisySphere(3000, 0.01, 6);
+  for (int i = 0; i < 1500; ++i) input.push_back(input[2 * i]);
+  DenoiseOptions by_count = FastOptions(20);
+  by_count.final_step.blended_surfaces = 15;  // 0.005 x 3000
+  by_count.final_step.blended_share = 0.0;
+  DenoiseOptions by_share = by_count;
+  by_share.final_step.blended_surfaces = 8;
+  by_share.final_step.blended_share = 0.005;
+  DenoiseOptions fewer = by_share;
+  fewer.final_step.blended_share = 0.0;
+  std::optional<DenoiseState> minimized;
+  DenoiseHooks hooks;
+  hooks.on_minimized = [&](const DenoiseState& state) { minimized = state; };
+  const DenoiseResult shared = DenoisePointSet(input, by_share, hooks);
+  const DenoiseResult counted = DenoisePointSet(input, by_count);
+  const DenoiseResult eight = DenoisePointSet(input, fewer);
+  ASSERT_EQ(shared.passes, 1);
+  ASSERT_TRUE(minimized.has_value());
+  const DenoiseResult resumed = ContinueDenoising(*minimized, by_share);
+  int differ_from_eight = 0;
+  for (size_t i = 0; i < input.size(); ++i) {
+    ASSERT_EQ(shared.projected[i], counted.projected[i]) << "point " << i;
+    differ_from_eight += shared.projected[i] != eight.projected[i];
+  }
+  EXPECT_GT(differ_from_eight, 2000);
+  // The resumed run counts the distinct points its state holds.
+  const DenoiseResult resumed_by_count = ContinueDenoising(*minimized, by_count);
+  ASSERT_EQ(resumed.projected.size(), 3000u);
+  for (size_t i = 0; i < resumed.projected.size(); ++i) {
+    ASSERT_EQ(resumed.projected[i], resumed_by_count.projected[i]) << "point " << i;
+  }
 }
 
 // mark_outliers: the same run as removal, with every removed point back at its input
