@@ -410,8 +410,9 @@ std::vector<Parameter> FinalStepParameters() {
               [](O& o) -> int& { return o.final_step.blended_surfaces; }),
       Number("blended_share", kBoth,
              {kFinal,
-              "or this share of the cloud's points, when that is more (at most k + 1): a "
-              "denser cloud blends the surfaces of a patch of the same share of its shape",
+              "or this share of the cloud's distinct points, when that is more (at most "
+              "k + 1; 0.001: 50 surfaces at 50,000 points): a denser cloud blends the "
+              "surfaces of a patch of the same share of its shape",
               "", "0"},
              [](O& o) -> double& { return o.final_step.blended_share; }),
       Flag("settled_blend", kBoth,
