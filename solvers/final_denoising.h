@@ -54,9 +54,9 @@ struct FinalDenoisingOptions {
   // A point moves to the mean of its projections onto the surfaces of itself and its nearest
   // neighbours, this many in all at least, at most k + 1 (paper: 1, its own plane).
   int blended_surfaces = 30;
-  // ... or this share of the cloud's points when that is more (paper: 0): a denser cloud
-  // blends the surfaces of a patch of the same share of the shape (docs/method.md, "The
-  // blend of surfaces").
+  // ... or this share of the cloud's distinct points when that is more (paper: 0): a denser
+  // cloud blends the surfaces of a patch of the same share of the shape (docs/method.md,
+  // "The count grows with the cloud"; 0.3% breaks the convergence bound on JOINT 0.03).
   double blended_share = 0.001;
   // Settle each point on the blend: project it once more from where the blend put it, along
   // the normal (ProjectOntoSettledBlend; paper: off, one surface). Lowers the mean distance
