@@ -184,10 +184,11 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
            {kNeighbours,
             "with k auto, where the noise probe reads sigma above 1.15 spacings (where it reads "
             "low, as measured on a noisy plane), widen the radius by the plane's under-reading, "
-            "less and not at all as 5% to 9% of the probe's regions nearly split into two "
-            "sides (a thin part the wider k would merge); k up to max_k. Where it reads past "
-            "1.305 spacings (no longer telling the noise) and the widening is faded, solve a "
-            "subsample it reads under 1.27",
+            "k up to max_k, and scale the smoothing balance back to the radius's k, less and "
+            "not at all as 5% to 9% of the probe's regions nearly split into two sides (thin "
+            "parts, whose merged sides want the full smoothing). Where it reads past 1.305 "
+            "spacings (no longer telling the noise) and over 5% of the regions nearly split, "
+            "solve a subsample it reads under 1.27",
             "", "false"},
            [](O& o) -> bool& { return o.neighborhood.wide_noise; }),
       Integer("max_k", kBoth, {kNeighbours, "with k auto, the largest k chosen"},

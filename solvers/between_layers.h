@@ -95,8 +95,8 @@
 // cheburashka at 2.5% (1.004) 1.39 instead of 1.30. From 1.05 to 1.15 spacings, the
 // benchmark's and the held-out cells that read there gain 2-50% in P2M or stay the same, but
 // two that lose up to 0.5% (docs/method.md, "Points between the layers from 1.05 spacings").
-// It reads the layers and corrects their heights there and where kThinShareForNoWidening or
-// more of the probe's regions split, the cloud's evidence of thin parts (the benchmark's
+// It reads the layers and corrects their heights there and where kThinCloudShare or more
+// of the probe's regions split, the cloud's evidence of thin parts (the benchmark's
 // sheets and plates at 10K 2% read 0.26-0.77 and JOINT 0.33, cheburashka 0.076 and the
 // meshes at 50K 1% under 0.01), which spares the others the search.
 //

@@ -224,7 +224,7 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
     // Where few of the probe's regions nearly split, judging the splits on 2k + 1 points
     // rather than kSheetSplitPoints changes no cell of the benchmark's meshes and costs a
     // search of 2k + 1 (docs/performance.md); thin-walled parts need it.
-    if (state.neighborhood.thin_candidate_fraction < kThinShareForNoWidening) {
+    if (state.neighborhood.thin_candidate_fraction < kThinCloudShare) {
       problem_options.split_neighborhood = energy::SplitNeighborhood::kSplitPoints;
     }
     if (!thinning.rows.empty()) SplitOffUnsolved(thinning.rows, ordered_points, &state,
@@ -392,7 +392,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     const bool move_between = estimates.spacing > 0.0 &&
                               estimates.read_sigma > kMoveBetweenReadRatio * estimates.spacing;
     const bool read_layers =
-        move_between || estimates.two_sheet_fraction >= kThinShareForNoWidening;
+        move_between || estimates.two_sheet_fraction >= kThinCloudShare;
     std::vector<SidesInput> sets = {
         {problem.points, result.normals, result.indicators.is_outlier, &result.projected}};
     energy::PointList extended_inputs(state.left_out_points.size());  // normalized frame

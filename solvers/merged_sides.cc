@@ -39,7 +39,7 @@ bool EstimateTwoSides(double m2, double m4, double max_kurtosis, TwoSides* sides
 }
 
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates) {
-  return estimates.thin_candidate_fraction >= kThinShareForNoWidening;
+  return estimates.thin_candidate_fraction >= kThinCloudShare;
 }
 
 std::vector<int> SideRegions::MergedRegionOf(const energy::PointList& points,

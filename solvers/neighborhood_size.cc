@@ -128,16 +128,14 @@ double PlaneReadFraction(double read_ratio) {
 double LastPlaneReadRatio() { return std::end(kPlaneReadings)[-1].read_ratio; }
 
 double PlaneReadingWeight(double thin_candidate_fraction) {
-  return std::clamp((kThinShareForNoWidening - thin_candidate_fraction) /
-                        (kThinShareForNoWidening - kThinShareForFullWidening),
+  return std::clamp((kThinCloudShare - thin_candidate_fraction) /
+                        (kThinCloudShare - kThinShareForPlaneReadings),
                     0.0, 1.0);
 }
 
-double WideNoiseFactor(double read_ratio, double thin_candidate_fraction) {
+double WideNoiseFactor(double read_ratio) {
   if (!(read_ratio > kCalibratedReadRatio)) return 1.0;
-  const double plane_factor =
-      PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(read_ratio);
-  return 1.0 + PlaneReadingWeight(thin_candidate_fraction) * (plane_factor - 1.0);
+  return PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(read_ratio);
 }
 
 double NoiseEstimate(double read_sigma, double spacing, double thin_candidate_fraction) {
@@ -294,13 +292,9 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
       size.merged_sides
           ? NoiseFromResiduals(std::move(side_residuals), k, floor)
           : NoiseEstimate(size.read_sigma, size.spacing, size.thin_candidate_fraction);
-  // Past the calibrated range the probe reads the noise ever lower, unless the sides of thin
-  // parts read as wide noise (WideNoiseFactor).
+  // Past the calibrated range the probe reads the noise ever lower (WideNoiseFactor).
   size.radius_in_sigmas = options.radius_in_sigmas;
-  if (options.wide_noise) {
-    size.radius_in_sigmas *=
-        WideNoiseFactor(size.read_sigma / size.spacing, size.thin_candidate_fraction);
-  }
+  if (options.wide_noise) size.radius_in_sigmas *= WideNoiseFactor(size.read_sigma / size.spacing);
   const int largest = std::min<int>(options.max_k, n - 1);
   const auto k_at = [&](double radius_in_sigmas) {
     const double radius_in_spacings = radius_in_sigmas * size.read_sigma / size.spacing;
@@ -309,7 +303,9 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
         std::clamp(chosen, double(options.min_k), double(std::max(options.min_k, largest)))));
   };
   size.k = k_at(size.radius_in_sigmas);
-  size.smoothing_scale = double(k_at(options.radius_in_sigmas)) / size.k;
+  size.smoothing_scale =
+      1.0 + PlaneReadingWeight(size.thin_candidate_fraction) *
+                (double(k_at(options.radius_in_sigmas)) / size.k - 1.0);
   return size;
 }
 

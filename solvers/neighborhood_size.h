@@ -24,17 +24,18 @@
 // 0.54 at 1.26, 0.41 at 1.31. c was calibrated up to kCalibratedReadRatio (FANDISK 0.03 reads
 // 1.07; the learned denoisers' benchmark at 50,000 points and 2% noise, 1.03-1.23, where 4.15
 // was about best). Past it, c grows by the plane's further fall (WideNoiseFactor): JOINT 0.03
-// (1.28) and the benchmark's meshes at 3% come out closer. But a thin part whose sides are
-// under about 3 noise deviations apart reads as one sheet with wide noise, and a wider k
-// merges its sides further (a plate 2 deviations thick came out worse than its input). Such
-// a part shows in the probe's regions as many that nearly split (the share passing
-// kThinRegionGrowthSeparation, sheet_split.h: 1-6% of the probes on the benchmark's meshes
-// at 50,000 points, 6-14% on plates, sheets, thin cylinders and thin-walled boxes whose sides
-// are 1.4-2.8 deviations apart), so the widening fades out between those shares
-// (docs/method.md, "Noise near the spacing"). Sides too close to split read as that one
-// sheet: there k keeps the spread the probe reads (read_sigma) and noise_sigma is each
-// side's noise, from the offsets' moments over regions of 1,500 probed points
-// (merged_sides.h; docs/method.md, "Thin parts").
+// (1.28) and the benchmark's meshes at 3% come out closer. A thin part whose sides are under
+// about 3 noise deviations apart reads as one sheet with wide noise, and a wider k merges its
+// sides further; the merged sides' step tells them apart afterwards (merged_sides.h), and
+// reads them best off a smooth mid-surface. Such a part shows in the probe's regions as many
+// that nearly split (the share passing kThinRegionGrowthSeparation, sheet_split.h: 1-6% of
+// the probes on the benchmark's meshes at 50,000 points, 6-14% on plates, sheets, thin
+// cylinders and thin-walled boxes whose sides are 1.4-2.8 deviations apart). k widens on
+// every cloud, but only where the plane's readings hold, on few such regions, is the
+// smoothing scaled back with it (smoothing_scale below; docs/method.md, "Thin parts read as
+// wide noise"). Sides too close to split read as that one sheet: there k keeps the spread
+// the probe reads (read_sigma) and noise_sigma is each side's noise, from the offsets'
+// moments over regions of 1,500 probed points (merged_sides.h; docs/method.md, "Thin parts").
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 #define LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
 
@@ -79,20 +80,20 @@ double LastPlaneReadRatio();
 constexpr double kCalibratedReadRatio = 1.15;
 
 // The share of the probe's regions that nearly split (thin_candidate_fraction below) up to
-// which c widens fully past kCalibratedReadRatio, and from which it does not widen.
-constexpr double kThinShareForFullWidening = 0.05;
-constexpr double kThinShareForNoWidening = 0.09;
+// which the plane's readings hold, and from which a cloud reads as thin parts whose sides
+// are too close to split.
+constexpr double kThinShareForPlaneReadings = 0.05;
+constexpr double kThinCloudShare = 0.09;
 
 // How far the plane's readings hold for a cloud with this share of nearly split regions: 1 up
-// to kThinShareForFullWidening, falling linearly to 0 at kThinShareForNoWidening. Sides too
-// close to split read as one sheet with wider noise, not as noise the plane under-reads.
+// to kThinShareForPlaneReadings, falling linearly to 0 at kThinCloudShare. Sides too close to
+// split read as one sheet with wider noise, not as noise the plane under-reads.
 double PlaneReadingWeight(double thin_candidate_fraction);
 
 // c's factor at this read sigma / spacing: 1 up to kCalibratedReadRatio; past it, the
 // fraction of the true sigma the probe reads on a plane there over the fraction it reads at
-// kCalibratedReadRatio (1.09 at 1.2, 1.30 at 1.26, held at 1.68 from 1.31 on), the excess over
-// 1 weighted by PlaneReadingWeight.
-double WideNoiseFactor(double read_ratio, double thin_candidate_fraction);
+// kCalibratedReadRatio (1.09 at 1.2, 1.30 at 1.26, held at 1.68 from 1.31 on).
+double WideNoiseFactor(double read_ratio);
 
 // The noise's deviation from the probe's reading: read_sigma over the fraction of the true
 // sigma the probe reads on a plane at read_sigma / spacing, that fraction's shortfall from 1
@@ -111,12 +112,15 @@ struct NeighborhoodSize {
   double spacing = 0.0;  // likewise
   double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;
-  // The k that radius c gives over k: below 1 where WideNoiseFactor widened k. The smoothing
+  // The k that radius c gives over k, its shortfall from 1 weighted by PlaneReadingWeight:
+  // below 1 where WideNoiseFactor widened k on a cloud of few thin parts. The smoothing
   // balance (energy/data_scaled_weights.h), a squared radius in neighbour hops, is scaled by
   // it, so that the smoothing reaches as far as the hops of radius c took it: with B at 4 over
   // the widened hops, curved parts flatten as the iterations go on past the stop (JOINT 0.03:
   // 2.6% farther from the mesh after 100 iterations; docs/method.md, "Smoothing over widened
-  // neighbourhoods"). 1 for a resumed state, whose saved balance is already scaled.
+  // neighbourhoods"). Thin parts' merged sides keep the full balance: the merged sides' step
+  // reads them off a smoother mid-surface (docs/method.md, "Thin parts read as wide noise").
+  // 1 for a resumed state, whose saved balance is already scaled.
   double smoothing_scale = 1.0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
   // Of the probe neighbourhoods, those whose region passes the growth bar

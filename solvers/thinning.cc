@@ -38,11 +38,12 @@ double ProblemSize(const Thinning& thinning, int n) {
   return static_cast<double>(solved) * thinning.size.k;
 }
 
-// The probe cannot read the noise (past LastPlaneReadRatio) where c cannot widen either: the
-// sides of thin parts fade WideNoiseFactor out.
+// The probe cannot read the noise (past LastPlaneReadRatio) where thin parts' sides, too
+// close to split, make part of the reading too (PlaneReadingWeight under 1): a wider k
+// alone, capped at max_k, spans too few noise deviations there.
 bool NoiseUnreadable(const NeighborhoodSize& size, const NeighborhoodSizeOptions& options) {
   return options.wide_noise && size.read_sigma > LastPlaneReadRatio() * size.spacing &&
-         size.thin_candidate_fraction > kThinShareForFullWidening;
+         size.thin_candidate_fraction > kThinShareForPlaneReadings;
 }
 
 // The whole cloud where n k meets the budget, else the largest subsample found that does;

@@ -10,8 +10,8 @@
 // the diagonal in 120 s; a subsample of 250K at k = 73 gives 0.56e-3 (docs/method.md).
 //
 // A subsample is also solved where the probe cannot read the noise: past its plane readings
-// (LastPlaneReadRatio) with the widening of c faded out by thin parts' sides
-// (WideNoiseFactor), the cloud is thinned until the probe reads under kReadableRatio
+// (LastPlaneReadRatio) on a cloud with thin parts' sides too close to split
+// (PlaneReadingWeight), the cloud is thinned until the probe reads under kReadableRatio
 // spacings, so that its neighbourhoods span more noise deviations (a thin cylinder of radius
 // 2 noise deviations at 50,000 points: P2M x 1e4 4.26 -> 1.86; docs/method.md, "Noise the
 // probe cannot read"). That search starts from the budget's choice, whose probes are cheap.

@@ -61,9 +61,9 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
         << "sigma " << sigma << ", read sigma / spacing " << read_ratio;
     // The estimate takes the plane's reading back out: the true sigma, within the same 5%.
     EXPECT_NEAR(size.noise_sigma / true_sigma, 1.0, 0.05) << "sigma " << sigma;
-    // Sheets far apart: few regions nearly split, and past kCalibratedReadRatio c widens by
-    // the plane's whole further fall.
-    EXPECT_LT(size.thin_candidate_fraction, kThinShareForFullWidening) << "sigma " << sigma;
+    // Past kCalibratedReadRatio c widens by the plane's further fall; sheets far apart: few
+    // regions nearly split, so the smoothing follows the widening back in full (below).
+    EXPECT_LT(size.thin_candidate_fraction, kThinShareForPlaneReadings) << "sigma " << sigma;
     const double factor = read_ratio > kCalibratedReadRatio
                               ? PlaneReadFraction(kCalibratedReadRatio) /
                                     PlaneReadFraction(read_ratio)
@@ -76,23 +76,26 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
     EXPECT_EQ(unwidened.smoothing_scale, 1.0);
     // The smoothing balance follows the widening back: the k of radius c over the k chosen.
     EXPECT_DOUBLE_EQ(size.smoothing_scale, double(unwidened.k) / size.k) << "sigma " << sigma;
-    if (factor > 1.0) EXPECT_LT(size.smoothing_scale, 1.0) << "sigma " << sigma;
+    if (factor > 1.0) {
+      EXPECT_LT(size.smoothing_scale, 1.0) << "sigma " << sigma;
+    }
   }
 }
 
-// The factor in closed form: the plane's fall past kCalibratedReadRatio, its excess over 1
-// weighted linearly down to 0 between the two shares of nearly split regions.
-TEST(NeighborhoodSize, WideNoiseFactorFadesWithTheShareOfNearlySplitRegions) {
-  EXPECT_EQ(WideNoiseFactor(0.5, 0.0), 1.0);
-  EXPECT_EQ(WideNoiseFactor(kCalibratedReadRatio, 0.0), 1.0);
+// The factor in closed form: the plane's fall past kCalibratedReadRatio; the weight of the
+// plane's readings falls linearly to 0 between the two shares of nearly split regions.
+TEST(NeighborhoodSize, WideNoiseFactorFollowsThePlaneAndItsWeightFadesWithThinParts) {
+  EXPECT_EQ(WideNoiseFactor(0.5), 1.0);
+  EXPECT_EQ(WideNoiseFactor(kCalibratedReadRatio), 1.0);
   const double plane = PlaneReadFraction(kCalibratedReadRatio) / PlaneReadFraction(1.26);
   EXPECT_GT(plane, 1.25);
-  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, 0.0), plane);
-  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, kThinShareForFullWidening), plane);
-  const double middle = 0.5 * (kThinShareForFullWidening + kThinShareForNoWidening);
-  EXPECT_NEAR(WideNoiseFactor(1.26, middle), 1.0 + 0.5 * (plane - 1.0), 1e-12);
-  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, kThinShareForNoWidening), 1.0);
-  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(WideNoiseFactor(1.26), plane);
+  EXPECT_EQ(PlaneReadingWeight(0.0), 1.0);
+  EXPECT_EQ(PlaneReadingWeight(kThinShareForPlaneReadings), 1.0);
+  const double middle = 0.5 * (kThinShareForPlaneReadings + kThinCloudShare);
+  EXPECT_NEAR(PlaneReadingWeight(middle), 0.5, 1e-12);
+  EXPECT_EQ(PlaneReadingWeight(kThinCloudShare), 0.0);
+  EXPECT_EQ(PlaneReadingWeight(0.5), 0.0);
 }
 
 // The estimate in closed form: the reading over the plane's read fraction, the fraction's
@@ -102,20 +105,21 @@ TEST(NeighborhoodSize, NoiseEstimateFadesWithTheShareOfNearlySplitRegions) {
   const double fraction = PlaneReadFraction(1.2);
   EXPECT_LT(fraction, 0.7);
   EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, 0.0), read / fraction);
-  EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, kThinShareForFullWidening), read / fraction);
-  const double middle = 0.5 * (kThinShareForFullWidening + kThinShareForNoWidening);
+  EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, kThinShareForPlaneReadings), read / fraction);
+  const double middle = 0.5 * (kThinShareForPlaneReadings + kThinCloudShare);
   EXPECT_NEAR(NoiseEstimate(read, spacing, middle), read / (1.0 + 0.5 * (fraction - 1.0)),
               1e-15);
-  EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, kThinShareForNoWidening), read);
+  EXPECT_DOUBLE_EQ(NoiseEstimate(read, spacing, kThinCloudShare), read);
   // Noise far below the spacing reads whole.
   EXPECT_DOUBLE_EQ(NoiseEstimate(0.001, spacing, 0.0), 0.001);
 }
 
 // A plate about 2 noise deviations thick at noise wider than the spacing (the learned
 // denoisers' plate_t0.03 at 50,000 points and 2%): it reads as one sheet with wide noise,
-// past kCalibratedReadRatio, but many of its regions nearly split, so c does not widen (a
-// wider k merged its sides: docs/method.md, "Noise near the spacing").
-TEST(NeighborhoodSize, AThinPlateReadAsWideNoiseDoesNotWiden) {
+// past kCalibratedReadRatio, and many of its regions nearly split. c widens by the plane's
+// fall as on any cloud, but the smoothing keeps its full balance, which the merged sides'
+// step wants (docs/method.md, "Thin parts read as wide noise").
+TEST(NeighborhoodSize, AThinPlateReadAsWideNoiseWidensWithTheFullSmoothing) {
   const experiments::ProceduralShape plate =
       experiments::MakeShape(experiments::ParseShapeSpec("box:size_x=1,size_y=1,size_z=0.03"));
   energy::PointList points = experiments::PoissonDiskSample(plate, 50000, /*seed=*/3).points;
@@ -125,9 +129,14 @@ TEST(NeighborhoodSize, AThinPlateReadAsWideNoiseDoesNotWiden) {
   for (energy::Point3& p : points) p += energy::Point3(normal(rng), normal(rng), normal(rng));
   const NeighborhoodSizeOptions options;
   const NeighborhoodSize size = ChooseNeighborhoodSize(points, options, 2);
-  EXPECT_GT(size.read_sigma / size.spacing, kCalibratedReadRatio);
-  EXPECT_GT(size.thin_candidate_fraction, kThinShareForNoWidening);
-  EXPECT_EQ(size.radius_in_sigmas, options.radius_in_sigmas);
+  const double read_ratio = size.read_sigma / size.spacing;
+  EXPECT_GT(read_ratio, kCalibratedReadRatio);
+  EXPECT_GT(size.thin_candidate_fraction, kThinCloudShare);
+  EXPECT_DOUBLE_EQ(size.radius_in_sigmas,
+                   options.radius_in_sigmas * PlaneReadFraction(kCalibratedReadRatio) /
+                       PlaneReadFraction(read_ratio));
+  EXPECT_GT(size.radius_in_sigmas, options.radius_in_sigmas);
+  EXPECT_EQ(size.smoothing_scale, 1.0);
 }
 
 TEST(NeighborhoodSize, StaysWithinItsBoundsAndRefusesTooFewPoints) {

@@ -161,9 +161,9 @@ TEST(ChooseThinning, WhereTheProbeCannotReadAThinPartsNoiseASubsampleItReadsIsSo
   const double sigma = noisy.sigma_absolute / energy::BoundingBoxDiagonal(noisy.points);
   NeighborhoodSizeOptions options;
   const NeighborhoodSize whole = ChooseNeighborhoodSize(noisy.points, options, 2);
-  // The reading is past the plane's, and the sides fade the widening of c out.
+  // The reading is past the plane's, and thin parts' sides make part of it.
   ASSERT_GT(whole.read_sigma, LastPlaneReadRatio() * whole.spacing);
-  ASSERT_GT(whole.thin_candidate_fraction, kThinShareForFullWidening);
+  ASSERT_GT(whole.thin_candidate_fraction, kThinShareForPlaneReadings);
   const Thinning thinned = ChooseThinning(noisy.points, options, 2);
   ASSERT_FALSE(thinned.rows.empty());
   EXPECT_LE(thinned.size.read_sigma, kReadableRatio * thinned.size.spacing);
