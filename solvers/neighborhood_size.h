@@ -32,8 +32,8 @@
 // the probes on the benchmark's meshes at 50,000 points, 6-14% on plates, sheets, thin
 // cylinders and thin-walled boxes whose sides are 1.4-2.8 deviations apart). k widens on
 // every cloud, but only where the plane's readings hold, on few such regions, is the
-// smoothing scaled back with it (smoothing_scale below; docs/method.md, "Thin parts read as
-// wide noise"). Sides too close to split read as that one sheet: there k keeps the spread
+// smoothing scaled back with it (smoothing_scale below; docs/method.md, "The fade moved to
+// the smoothing"). Sides too close to split read as that one sheet: there k keeps the spread
 // the probe reads (read_sigma) and noise_sigma is each side's noise, from the offsets'
 // moments over regions of 1,500 probed points (merged_sides.h; docs/method.md, "Thin parts").
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
@@ -119,7 +119,7 @@ struct NeighborhoodSize {
   // the widened hops, curved parts flatten as the iterations go on past the stop (JOINT 0.03:
   // 2.6% farther from the mesh after 100 iterations; docs/method.md, "Smoothing over widened
   // neighbourhoods"). Thin parts' merged sides keep the full balance: the merged sides' step
-  // reads them off a smoother mid-surface (docs/method.md, "Thin parts read as wide noise").
+  // reads them off a smoother mid-surface (docs/method.md, "The fade moved to the smoothing").
   // 1 for a resumed state, whose saved balance is already scaled.
   double smoothing_scale = 1.0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)

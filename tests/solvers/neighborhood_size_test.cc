@@ -118,7 +118,7 @@ TEST(NeighborhoodSize, NoiseEstimateFadesWithTheShareOfNearlySplitRegions) {
 // denoisers' plate_t0.03 at 50,000 points and 2%): it reads as one sheet with wide noise,
 // past kCalibratedReadRatio, and many of its regions nearly split. c widens by the plane's
 // fall as on any cloud, but the smoothing keeps its full balance, which the merged sides'
-// step wants (docs/method.md, "Thin parts read as wide noise").
+// step wants (docs/method.md, "The fade moved to the smoothing").
 TEST(NeighborhoodSize, AThinPlateReadAsWideNoiseWidensWithTheFullSmoothing) {
   const experiments::ProceduralShape plate =
       experiments::MakeShape(experiments::ParseShapeSpec("box:size_x=1,size_y=1,size_z=0.03"));
