@@ -164,9 +164,10 @@ bool MarkMergedRegions(const std::vector<SideRegions*>& parts, int num_threads);
 
 // Whether the probe reads each side's noise of merged sides (neighborhood_size.h):
 // kThinCloudShare or more of its regions nearly split (the evidence that also keeps the
-// full smoothing balance). The final step's test runs on every cloud: measured from the reference,
-// one sheet's regions read under the bar by chance only, and the meshes of the learned
-// denoisers' benchmark stay under kMinMergedRegionShare (docs/method.md, "Thin parts").
+// full smoothing balance). The final step's test runs on every cloud: measured from the
+// reference, one sheet's regions read under the bar by chance only, and the meshes of the
+// learned denoisers' benchmark stay under kMinMergedRegionShare (docs/method.md, "Thin
+// parts").
 bool SidesMayHaveMerged(const NeighborhoodSize& estimates);
 
 // The offsets z are measured from a reference surface, not from each point's own output.
