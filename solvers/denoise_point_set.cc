@@ -13,6 +13,7 @@
 #include "solvers/duplicate_points.h"
 #include "solvers/even_spacing.h"
 #include "solvers/far_points.h"
+#include "solvers/adaptive_heights.h"
 #include "solvers/height_smoothing.h"
 #include "solvers/between_layers.h"
 #include "solvers/merged_sides.h"
@@ -439,6 +440,16 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       if (smoothed[i] != normalized[i]) result.projected[i] = problem.frame.ToInput(smoothed[i]);
     }
     clock.Lap("height smoothing");
+  }
+  // Each height refitted at the widest scale its neighbours agree on (adaptive_heights.h).
+  if (options.final_step.adaptive_heights) {
+    normalize_output();
+    const energy::PointList refitted = RefitHeightsAtAdaptiveScale(
+        normalized, result.normals, movable, options.settings.num_threads);
+    for (size_t i = 0; i < normalized.size(); ++i) {
+      if (refitted[i] != normalized[i]) result.projected[i] = problem.frame.ToInput(refitted[i]);
+    }
+    clock.Lap("adaptive heights");
   }
   if (options.final_step.snap_features) {
     result.snapping = SnapFeaturePoints(problem, state.variables, result.indicators.is_feature,
