@@ -440,11 +440,12 @@ std::vector<Parameter> FinalStepParameters() {
               [](O& o) -> int& { return o.final_step.height_smoothing_pairs; }),
       Flag("adaptive_heights", kBoth,
            {kFinal,
-            "last, move each output point along its normal to the height of a quadratic "
-            "fitted to its nearest outputs (12 to 256 of them, within 20 degrees and the "
-            "outputs' jitter), over the widest of them whose estimate agrees with every "
-            "narrower one's within two standard errors: flat and gently curved parts take "
-            "wide fits, edges and fine detail narrow ones",
+            "last, where the probe reads the noise narrower than the spacing, move each "
+            "output point along its normal to the height of a quadratic fitted to its "
+            "nearest outputs (12 to 256 of them, within 20 degrees and the outputs' jitter), "
+            "over the widest of them whose estimate agrees with every narrower one's within "
+            "two standard errors: flat and gently curved parts take wide fits, edges and fine "
+            "detail narrow ones",
             "", "false"},
            [](O& o) -> bool& { return o.final_step.adaptive_heights; }),
       Flag("offset_feedback", kBoth,

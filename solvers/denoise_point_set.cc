@@ -441,8 +441,10 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     }
     clock.Lap("height smoothing");
   }
-  // Each height refitted at the widest scale its neighbours agree on (adaptive_heights.h).
-  if (options.final_step.adaptive_heights) {
+  // Each height refitted at the widest scale its neighbours agree on (adaptive_heights.h),
+  // where the probe reads the noise narrower than the spacing.
+  if (options.final_step.adaptive_heights && estimates.spacing > 0.0 &&
+      estimates.read_sigma <= kMoveBetweenReadRatio * estimates.spacing) {
     normalize_output();
     const energy::PointList refitted = RefitHeightsAtAdaptiveScale(
         normalized, result.normals, movable, options.settings.num_threads);

@@ -77,7 +77,8 @@ struct FinalDenoisingOptions {
   // nearest outputs, after the steps above (height_smoothing.h; 0: off; paper: off).
   int height_smoothing_pairs = 2;
   // Refit each output's height at the widest scale its neighbours agree on, after the steps
-  // above (adaptive_heights.h; paper: off).
+  // above, where the probe reads the noise narrower than the spacing (adaptive_heights.h;
+  // paper: off).
   bool adaptive_heights = true;
   double outlier_fraction = 0.65;        // outlier score that makes an outlier, in (0, 1]
   // Largest factor by which a plane's region noise may widen its line process (above; 1:
