@@ -26,7 +26,10 @@
 // a_m +- kIntervalHalfWidth sqrt(g L_m) meets the intervals of every scale before it (bias
 // moves a_m off the others' intervals as the fit widens over a feature or a curved detail),
 // and o_i moves by a n_i. Every fit reads the outputs as given (Jacobi), so the result does
-// not depend on the order of the points or the thread count.
+// not depend on the order of the points or the thread count. The default runs it only where
+// the probe reads the noise narrower than the spacing: wider, the outputs' error is mostly
+// the offset their fits share, and taking the jitter away raises P2M's mesh-to-result half
+// (docs/method.md).
 #ifndef LPD_SOLVERS_ADAPTIVE_HEIGHTS_H_
 #define LPD_SOLVERS_ADAPTIVE_HEIGHTS_H_
 
