@@ -16,7 +16,8 @@
 // sign) and whose heights z = n_i.(o_j - o_i) lie within
 //   kJitterBandDeviations r + kBandSlope d,
 // d the distance from o_i along the tangent plane and r = 1.4826 x the median over the
-// outputs of the median |z| of each one's kJitterNeighbors nearest (the jitter's deviation):
+// outputs of the median |z| of each one's first kJitterNeighbors within the angle among its
+// 2 kJitterNeighbors + 1 nearest (the jitter's deviation):
 // an edge's other face and a thin part's other side do not count; a tilted normal does not
 // shut out the far neighbours of a flat part. Over the first m of them, for m in
 // kAdaptiveScales, the height field z = a + b.(u, v) + (u, v) C (u, v)^T is fitted by least
