@@ -324,6 +324,12 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
       movable[i] = !result.indicators.is_outlier[i];
     }
   };
+  // Takes the outputs a step moved (`moved`, normalized frame, in the order of `normalized`).
+  auto take_moved = [&](const energy::PointList& moved) {
+    for (size_t i = 0; i < normalized.size(); ++i) {
+      if (moved[i] != normalized[i]) result.projected[i] = problem.frame.ToInput(moved[i]);
+    }
+  };
   // Spreads the outputs flagged in `spreading` evenly over the surface (even_spacing.h), each
   // following its own fitted surface: it keeps the blend's offset from it. `kernel`: as
   // SpreadEvenly takes it.
@@ -436,9 +442,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
         SmoothHeights(normalized, result.normals, movable,
                       kHeightBandDeviations * estimates.read_sigma,
                       options.final_step.height_smoothing_pairs, options.settings.num_threads);
-    for (size_t i = 0; i < normalized.size(); ++i) {
-      if (smoothed[i] != normalized[i]) result.projected[i] = problem.frame.ToInput(smoothed[i]);
-    }
+    take_moved(smoothed);
     clock.Lap("height smoothing");
   }
   // Each height refitted at the widest scale its neighbours agree on (adaptive_heights.h),
@@ -448,9 +452,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
     normalize_output();
     const energy::PointList refitted = RefitHeightsAtAdaptiveScale(
         normalized, result.normals, movable, options.settings.num_threads);
-    for (size_t i = 0; i < normalized.size(); ++i) {
-      if (refitted[i] != normalized[i]) result.projected[i] = problem.frame.ToInput(refitted[i]);
-    }
+    take_moved(refitted);
     clock.Lap("adaptive heights");
   }
   if (options.final_step.snap_features) {

@@ -47,6 +47,13 @@ Cloud Surface(int side, double s, uint64_t seed, const Height& height,
   return cloud;
 }
 
+// The plane z = height.
+Cloud Plane(int side, double s, uint64_t seed, double height) {
+  return Surface(
+      side, s, seed, [height](double, double) { return height; },
+      [](double, double) { return Eigen::Vector2d::Zero().eval(); });
+}
+
 Cloud Saddle(int side, double s, uint64_t seed) {
   return Surface(
       side, s, seed, [](double x, double y) { return 0.8 * (x - 0.15) * (y - 0.15); },
@@ -141,6 +148,12 @@ double MeanAbsError(const Cloud& cloud, const energy::PointList& points,
   return sum / rows.size();
 }
 
+// The step on every point of `cloud`, all movable.
+energy::PointList RefitAll(const Cloud& cloud, int threads) {
+  return RefitHeightsAtAdaptiveScale(cloud.points, cloud.normals,
+                                     std::vector<uint8_t>(cloud.points.size(), 1), threads);
+}
+
 std::vector<int> AllRows(const Cloud& cloud) {
   std::vector<int> rows(cloud.points.size());
   for (size_t i = 0; i < rows.size(); ++i) rows[i] = static_cast<int>(i);
@@ -157,12 +170,10 @@ Cloud Roof(int side, double s, uint64_t seed) {
 TEST(RefitHeightsAtAdaptiveScale, MatchesTheBruteForceOnANoisySaddleAndRoof) {
   for (const Cloud& cloud : {Saddle(30, 0.003, 7), Roof(30, 0.002, 5)}) {
     const energy::PointList expected = BruteForce(cloud);
-    const std::vector<uint8_t> movable(cloud.points.size(), 1);
     int moved = 0;
     for (int threads : {1, 2}) {
       SCOPED_TRACE(threads);
-      const energy::PointList refitted =
-          RefitHeightsAtAdaptiveScale(cloud.points, cloud.normals, movable, threads);
+      const energy::PointList refitted = RefitAll(cloud, threads);
       for (size_t i = 0; i < refitted.size(); ++i) {
         // Estimates are stored as floats: agreement to about 1e-7 of the heights moved.
         ASSERT_NEAR((refitted[i] - expected[i]).norm(), 0.0, 1e-8) << "point " << i;
@@ -175,19 +186,14 @@ TEST(RefitHeightsAtAdaptiveScale, MatchesTheBruteForceOnANoisySaddleAndRoof) {
 
 TEST(RefitHeightsAtAdaptiveScale, DenoisesASaddle) {
   const Cloud cloud = Saddle(30, 0.003, 7);
-  const energy::PointList refitted = RefitHeightsAtAdaptiveScale(
-      cloud.points, cloud.normals, std::vector<uint8_t>(cloud.points.size(), 1), 2);
+  const energy::PointList refitted = RefitAll(cloud, 2);
   EXPECT_LT(MeanAbsError(cloud, refitted, AllRows(cloud)),
             0.5 * MeanAbsError(cloud, cloud.points, AllRows(cloud)));
 }
 
 TEST(RefitHeightsAtAdaptiveScale, AveragesANoisyPlaneOverTheWidestScale) {
-  const Cloud cloud = Surface(
-      30, 0.002, 11, [](double, double) { return 0.0; },
-      [](double, double) { return Eigen::Vector2d::Zero().eval(); });
-  const std::vector<uint8_t> movable(cloud.points.size(), 1);
-  const energy::PointList refitted =
-      RefitHeightsAtAdaptiveScale(cloud.points, cloud.normals, movable, 2);
+  const Cloud cloud = Plane(30, 0.002, 11, 0.0);
+  const energy::PointList refitted = RefitAll(cloud, 2);
   // A fit over 256 of 900 iid heights leaves about sqrt(L_256) ~ 0.1-0.2 of the deviation
   // at the centre (more at the border, where the fit extrapolates).
   EXPECT_LT(MeanAbsError(cloud, refitted, AllRows(cloud)),
@@ -196,9 +202,7 @@ TEST(RefitHeightsAtAdaptiveScale, AveragesANoisyPlaneOverTheWidestScale) {
 
 TEST(RefitHeightsAtAdaptiveScale, DoesNotRoundARidge) {
   const Cloud cloud = Roof(30, 0.002, 5);
-  const std::vector<uint8_t> movable(cloud.points.size(), 1);
-  const energy::PointList refitted =
-      RefitHeightsAtAdaptiveScale(cloud.points, cloud.normals, movable, 2);
+  const energy::PointList refitted = RefitAll(cloud, 2);
   std::vector<int> ridge;
   for (size_t i = 0; i < cloud.points.size(); ++i) {
     if (std::abs(cloud.points[i].x() - 0.15) < 0.02) ridge.push_back(static_cast<int>(i));
@@ -212,12 +216,8 @@ TEST(RefitHeightsAtAdaptiveScale, DoesNotRoundARidge) {
 }
 
 TEST(RefitHeightsAtAdaptiveScale, LeavesAFlatPlaneWhereItIs) {
-  const Cloud cloud = Surface(
-      20, 0.0, 3, [](double, double) { return 0.25; },
-      [](double, double) { return Eigen::Vector2d::Zero().eval(); });
-  const std::vector<uint8_t> movable(cloud.points.size(), 1);
-  const energy::PointList refitted =
-      RefitHeightsAtAdaptiveScale(cloud.points, cloud.normals, movable, 2);
+  const Cloud cloud = Plane(20, 0.0, 3, 0.25);
+  const energy::PointList refitted = RefitAll(cloud, 2);
   for (size_t i = 0; i < refitted.size(); ++i) {
     EXPECT_NEAR((refitted[i] - cloud.points[i]).norm(), 0.0, 1e-12) << "point " << i;
   }
@@ -231,8 +231,7 @@ TEST(RefitHeightsAtAdaptiveScale, PointsLeftOutNeitherMoveNorCount) {
   Cloud without = cloud;
   without.points.erase(without.points.begin() + lifted);
   without.normals.erase(without.normals.begin() + lifted);
-  const energy::PointList expected = RefitHeightsAtAdaptiveScale(
-      without.points, without.normals, std::vector<uint8_t>(without.points.size(), 1), 2);
+  const energy::PointList expected = RefitAll(without, 2);
   for (int variant = 0; variant < 2; ++variant) {
     SCOPED_TRACE(variant);
     Cloud left_out = cloud;
@@ -251,8 +250,7 @@ TEST(RefitHeightsAtAdaptiveScale, PointsLeftOutNeitherMoveNorCount) {
     }
   }
   // Taking part, the lifted point moves back toward the saddle.
-  const energy::PointList refitted = RefitHeightsAtAdaptiveScale(
-      cloud.points, cloud.normals, std::vector<uint8_t>(cloud.points.size(), 1), 2);
+  const energy::PointList refitted = RefitAll(cloud, 2);
   EXPECT_LT(std::abs(refitted[lifted].z() - cloud.truth[lifted]),
             0.5 * std::abs(cloud.points[lifted].z() - cloud.truth[lifted]));
 }
