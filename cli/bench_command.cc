@@ -35,6 +35,7 @@ int RunBenchCommand(const std::vector<std::string>& arguments) {
   solvers::DenoiseOptions options = DenoiseOptionsFromFlags();
   options.minimizer.energy_tolerance = 0.0;
   options.minimizer.progress_tolerance = 0.0;
+  options.minimizer.motion_tolerance = 0.0;
   options.minimizer.trace_blocks = false;
   // One pass and no isolation test: the figures are those of one minimization.
   options.final_step.outlier_passes = 1;

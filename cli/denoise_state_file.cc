@@ -21,7 +21,9 @@ constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
 // was written before it existed and resumes with it off, as it would have run then.
 // 5: a checksum of every byte follows the end mark, so that a changed byte is refused
 // rather than resumed from; versions 3 and 4 have none.
-constexpr uint32_t kVersion = 5;
+// 6: the motion test (motion_tolerance) and what it reads: the noise deviation and each
+// iteration's motion. An older state resumes with the test off, as it would have run then.
+constexpr uint32_t kVersion = 6;
 constexpr uint32_t kOldestVersion = 3;
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 
@@ -186,6 +188,9 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   out.Value(static_cast<int32_t>(progress.gnc.stage_iterations));
   out.Value(static_cast<uint32_t>(progress.energy_history.size()));
   out.Array(progress.energy_history.data(), progress.energy_history.size());
+  out.Value(progress.noise_sigma);
+  out.Value(static_cast<uint32_t>(progress.motion_history.size()));
+  out.Array(progress.motion_history.data(), progress.motion_history.size());
   out.Array(kEndMark, sizeof(kEndMark));
   out.Value(out.checksum());
   file.Commit();
@@ -216,6 +221,7 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
     std::string name = in.Text();
     run.parameters.emplace_back(std::move(name), in.Text());
   }
+  if (version < 6) run.parameters.emplace_back("motion_tolerance", "0");
 
   solvers::DenoiseState& state = run.state;
   energy::Problem& problem = state.problem;
@@ -286,9 +292,23 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   progress.gnc.stage_iterations = in.Value<int32_t>();
   in.Vector(in.Value<uint32_t>(), &progress.energy_history);
   RequireFinite(progress.energy_history, "energy", in);
+  if (version >= 6) {
+    progress.noise_sigma = in.Value<double>();
+    in.Vector(in.Value<uint32_t>(), &progress.motion_history);
+  } else {
+    progress.motion_history.assign(progress.energy_history.size(), NAN);
+  }
   if (progress.iterations < 0 || progress.gnc.stage_iterations < 0 ||
-      !(std::isnan(progress.mu_l) || progress.mu_l > 0.0)) {
+      !(std::isnan(progress.mu_l) || progress.mu_l > 0.0) ||
+      !(std::isnan(progress.noise_sigma) ||
+        (progress.noise_sigma > 0.0 && std::isfinite(progress.noise_sigma))) ||
+      progress.motion_history.size() != progress.energy_history.size()) {
     in.Fail("corrupt state file (progress)");
+  }
+  for (double motion : progress.motion_history) {
+    if (!(std::isnan(motion) || (motion >= 0.0 && std::isfinite(motion)))) {
+      in.Fail("corrupt state file (motion)");
+    }
   }
   char end[sizeof(kEndMark)];
   in.Array(end, sizeof(end));

@@ -299,7 +299,7 @@ std::vector<Parameter> AlternatingParameters() {
       Number("energy_tolerance", kAlternating,
              {kSchedule,
               "stop when the energy changes by less than this fraction over three iterations; "
-              "0 with progress_tolerance 0 runs all iterations",
+              "0 with progress_tolerance and motion_tolerance 0 runs all iterations",
               "", "0.01"},
              [](O& o) -> double& { return o.minimizer.energy_tolerance; }),
       Number("progress_tolerance", kAlternating,
@@ -308,6 +308,12 @@ std::vector<Parameter> AlternatingParameters() {
               "fraction of its fall since the first iteration (0: off)",
               "", "0"},
              [](O& o) -> double& { return o.minimizer.progress_tolerance; }),
+      Number("motion_tolerance", kAlternating,
+             {kSchedule,
+              "also stop when each of the last three iterations moved the output points by "
+              "less than this many noise deviations (RMS; 0: off)",
+              "", "0"},
+             [](O& o) -> double& { return o.minimizer.motion_tolerance; }),
       Flag("optimize_orientations", kAlternating,
            {kSchedule, "update the orientations s_ij (Eq. 8); false holds them at 1 (Fig. 4)"},
            [](O& o) -> bool& { return o.minimizer.optimize_orientations; }),

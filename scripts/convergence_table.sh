@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The defaults at their own stopping point against the same run continued to 50 and to 100
-# iterations (both stopping tests off), on the shared models with a clean mesh and on two
+# iterations (the stopping tests off), on the shared models with a clean mesh and on two
 # low-noise mesh samples (k at its floor of 12, where the progress test stops the run): mean
 # exact distance to the mesh over its bounding-box diagonal, and the ratios to the stop.
 # Usage: scripts/convergence_table.sh [LPD_DATA]   (about 4 minutes on 2 cores)
@@ -25,7 +25,7 @@ for input in "$data"/noisy/{fandisk,joint}_noise_0.0{1,3}.xyz "$tmp"/*_mesh_*.pl
   row=("$(mean "$tmp/stop.xyz" "$mesh")")
   for n in 50 100; do
     ./build/lpd denoise "$input" -o "$tmp/$n.xyz" --quiet --energy_tolerance=0 \
-      --progress_tolerance=0 --max_iters="$n" >/dev/null 2>&1
+      --progress_tolerance=0 --motion_tolerance=0 --max_iters="$n" >/dev/null 2>&1
     row+=("$(mean "$tmp/$n.xyz" "$mesh")")
   done
   awk -v n="$name" -v it="$iterations" -v a="${row[0]}" -v b="${row[1]}" -v c="${row[2]}" \

@@ -24,6 +24,8 @@ bool AlternatingMinimizer::Options::IsValid(std::string* error) const {
     out << "energy_tolerance must be finite and >= 0, got " << energy_tolerance;
   } else if (!(progress_tolerance >= 0.0) || !std::isfinite(progress_tolerance)) {
     out << "progress_tolerance must be finite and >= 0, got " << progress_tolerance;
+  } else if (!(motion_tolerance >= 0.0) || !std::isfinite(motion_tolerance)) {
+    out << "motion_tolerance must be finite and >= 0, got " << motion_tolerance;
   } else if (energy_window < 1) {
     out << "energy_window must be >= 1, got " << energy_window;
   } else if (!gnc.IsValid(error)) {
@@ -78,7 +80,7 @@ class AlternatingRun {
         Stop(TerminationType::kUserAbort, "stopped by the callback");
         break;
       }
-      if (at_targets && Converged(record.energy.total())) break;
+      if (at_targets && Converged(record)) break;
     }
     if (summary_.termination == TerminationType::kNoConvergence) DescribeNoConvergence();
     summary_.mu_l = parameters_.mu_l;
@@ -113,16 +115,17 @@ class AlternatingRun {
     return record;
   }
 
-  // H (Eq. 10), then L (Eq. 6) at the scheduled mu_l. The first local step fixes the target
-  // mu_l (from the noise when mu_l_noise_sigmas > 0).
+  // H (Eq. 10), then L (Eq. 6) at the scheduled mu_l. The first local step reads the noise
+  // from its fit and fixes the target mu_l (from the noise when mu_l_noise_sigmas > 0).
   void LocalStep(IterationRecord* record) {
     record->local_seconds += RunBlock("H", record->iteration, 0, [&] {
       UpdateLocalPlanes(problem_, parameters_, threads_, v_);
       return -1;
     }).seconds;
+    if (std::isnan(state_.noise_sigma)) state_.noise_sigma = FittingNoiseSigma(problem_, *v_);
     if (std::isnan(state_.mu_l)) {
       if (settings_.mu_l_noise_sigmas > 0.0) {
-        parameters_.mu_l = NoiseScaledMuL(problem_, *v_, settings_.mu_l_noise_sigmas);
+        parameters_.mu_l = NoiseScaledMuL(state_.noise_sigma, settings_.mu_l_noise_sigmas);
       }
       state_.mu_l = parameters_.mu_l;
     }
@@ -180,10 +183,13 @@ class AlternatingRun {
 
   // The stopping rules over the iterations run at the target selectivities, w =
   // energy_window: |E_t - E_{t-w}| <= energy_tolerance |E_{t-w}|, or
-  // E_{t-w} - E_t <= progress_tolerance (E_1 - E_t).
-  bool Converged(double total) {
+  // E_{t-w} - E_t <= progress_tolerance (E_1 - E_t), or the last w iterations each moved
+  // the outputs by at most motion_tolerance noise deviations.
+  bool Converged(const IterationRecord& record) {
+    const double total = record.energy.total();
     std::vector<double>& history = state_.energy_history;
     history.push_back(total);
+    state_.motion_history.push_back(record.point_motion);
     const int w = options_.energy_window;
     if (static_cast<int>(history.size()) <= w) return false;
     const double before = history[history.size() - 1 - w];
@@ -197,10 +203,24 @@ class AlternatingRun {
                before - total <= options_.progress_tolerance * (history.front() - total)) {
       out << "the last " << w << " iterations lowered the energy by less than "
           << 100.0 * options_.progress_tolerance << "% of its fall since the first";
+    } else if (options_.motion_tolerance > 0.0 && LastMotionsBelowTolerance(w)) {
+      out << "the last " << w << " iterations each moved the output points by less than "
+          << options_.motion_tolerance << " noise deviations";
     } else {
       return false;
     }
     Stop(TerminationType::kConvergence, out.str());
+    return true;
+  }
+
+  // Whether each of the last w motions is at most motion_tolerance x noise_sigma (a NaN
+  // motion, a run's first iteration, is not).
+  bool LastMotionsBelowTolerance(int w) const {
+    const std::vector<double>& motions = state_.motion_history;
+    const double bar = options_.motion_tolerance * state_.noise_sigma;
+    for (size_t j = motions.size() - w; j < motions.size(); ++j) {
+      if (!(motions[j] <= bar)) return false;
+    }
     return true;
   }
 
@@ -224,10 +244,7 @@ class AlternatingRun {
     std::ostringstream out;
     out << summary_.message << "; the output points moved " << std::setprecision(2) << motion
         << " of the diagonal (RMS) in the last one";
-    if (settings_.mu_l_noise_sigmas > 0.0) {
-      const double sigma = std::sqrt(parameters_.mu_l) / settings_.mu_l_noise_sigmas;
-      out << ", " << motion / sigma << " noise sigma";
-    }
+    if (state_.noise_sigma > 0.0) out << ", " << motion / state_.noise_sigma << " noise sigma";
     summary_.message = out.str();
   }
 

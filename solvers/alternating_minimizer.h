@@ -5,7 +5,8 @@
 // exact minimizer of Eq. (5) over its block, so once H is on the unit sphere the energy never
 // increases. The run stops after `max_iterations`, or when the last `energy_window` iterations
 // changed the total energy by less than `energy_tolerance` of its value, or lowered it by
-// less than `progress_tolerance` of what the run has lowered it since its first iteration.
+// less than `progress_tolerance` of what the run has lowered it since its first iteration,
+// or each moved the output points by less than `motion_tolerance` noise deviations.
 //
 // Options beyond the paper, for ablations: S held at 1 (Fig. 4), a scale-aware mu_l from the
 // residuals of the first local fit, and graduated non-convexity on mu_l and/or mu_m. A run
@@ -40,6 +41,12 @@ struct MinimizerProgress {
   GncState gnc;
   // Total energies of the iterations run at the target selectivities (convergence test).
   std::vector<double> energy_history;
+  // The noise deviation read from the residuals of the first local fit (the sigma behind
+  // the scale-aware mu_l, FittingNoiseSigma); NaN until the first local step.
+  double noise_sigma = NAN;
+  // How far each of those iterations moved the output points (RMS, IterationRecord::
+  // point_motion), NaN for a run's first iteration (motion test).
+  std::vector<double> motion_history;
 };
 
 class AlternatingMinimizer {
@@ -63,6 +70,12 @@ class AlternatingMinimizer {
     // output has settled; the relative test alone stops them only after 60-170 iterations.
     // 0 disables the test (the paper preset).
     double progress_tolerance = 1e-3;
+    // Also stop when each of the last energy_window iterations moved the output points by
+    // at most motion_tolerance x noise_sigma (RMS; MinimizerProgress::noise_sigma): the
+    // energy's last slow fall is a drift of the plane field that moves no output by more
+    // than a fraction of the noise (docs/method.md, "The motion test"). 0 disables the test
+    // (the paper preset).
+    double motion_tolerance = 4e-3;
     int energy_window = 3;
     // Alg. 1 line 16 (Eq. 8); false holds every s_ij at 1, the ablation of Fig. 4.
     bool optimize_orientations = true;

@@ -60,12 +60,19 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
   return std::max(kMedianAbsToSigma * *middle, problem.quantization_noise);
 }
 
+double FittingNoiseSigma(const energy::Problem& problem, const energy::Variables& v) {
+  return std::max(RobustFittingResidualScale(problem, v),
+                  kMinMuLNoiseSpacings * energy::SampleSpacing(problem));
+}
+
+double NoiseScaledMuL(double noise_sigma, double noise_sigmas) {
+  const double scale = noise_sigmas * noise_sigma;
+  return std::max(scale * scale, std::numeric_limits<double>::min());
+}
+
 double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,
                       double noise_sigmas) {
-  const double sigma = std::max(RobustFittingResidualScale(problem, v),
-                                kMinMuLNoiseSpacings * energy::SampleSpacing(problem));
-  const double scale = noise_sigmas * sigma;
-  return std::max(scale * scale, std::numeric_limits<double>::min());
+  return NoiseScaledMuL(FittingNoiseSigma(problem, v), noise_sigmas);
 }
 
 double RmsProjectedPointChange(const energy::Problem& problem, const energy::PlaneField& old_t,

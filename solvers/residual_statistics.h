@@ -35,8 +35,14 @@ double RobustFittingResidualScale(const energy::Problem& problem, const energy::
 // and low-noise input").
 constexpr double kMinMuLNoiseSpacings = 0.1;
 
-// mu_l = (c sigma)^2 with sigma = RobustFittingResidualScale (the scale-aware mu_l), sigma at
-// least kMinMuLNoiseSpacings x SampleSpacing(problem).
+// The noise deviation behind the scale-aware mu_l: RobustFittingResidualScale, at least
+// kMinMuLNoiseSpacings x SampleSpacing(problem).
+double FittingNoiseSigma(const energy::Problem& problem, const energy::Variables& v);
+
+// mu_l = (c sigma)^2 (the scale-aware mu_l), c = noise_sigmas, sigma = noise_sigma.
+double NoiseScaledMuL(double noise_sigma, double noise_sigmas);
+
+// NoiseScaledMuL at sigma = FittingNoiseSigma(problem, v).
 double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,
                       double noise_sigmas);
 

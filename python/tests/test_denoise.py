@@ -179,7 +179,7 @@ def test_ctrl_c_raises_keyboard_interrupt_and_stops_the_solve():
     try:
         with pytest.raises(KeyboardInterrupt):
             lpd.denoise(points, threads=2, max_iters=1000, energy_tolerance=0,
-                        progress_tolerance=0)
+                        progress_tolerance=0, motion_tolerance=0)
     finally:
         timer.cancel()
     assert time.monotonic() - start < 30.0
@@ -198,7 +198,8 @@ def test_the_gil_is_released_during_the_solve():
     ticker = threading.Thread(target=tick)
     ticker.start()
     try:
-        lpd.denoise(points, threads=1, max_iters=10, energy_tolerance=0, progress_tolerance=0)
+        lpd.denoise(points, threads=1, max_iters=10, energy_tolerance=0, progress_tolerance=0,
+                    motion_tolerance=0)
     finally:
         stop.set()
         ticker.join()

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -28,12 +29,14 @@ solvers::DenoiseOptions RunOptions(int max_iterations) {
   options.settings.num_threads = 2;
   options.minimizer.max_iterations = max_iterations;
   // Everything that carries state across iterations: the scale-aware mu_l, a continuation
-  // still under way at the split, and the energy history of the stopping test.
+  // still under way at the split, and the energy and motion histories of the stopping tests
+  // (the motion test on, too tight to stop these runs).
   options.settings.mu_l_noise_sigmas = 3.0;
   options.minimizer.gnc.target = solvers::GncTarget::kBoth;
   options.minimizer.gnc.factor = 3.0;
   options.minimizer.gnc.stage_iterations = 2;
   options.minimizer.energy_tolerance = 1e-9;
+  options.minimizer.motion_tolerance = 1e-9;
   options.settings.energy.mu_m = 1.0 - std::cos(25.0 * M_PI / 180.0);  // not a short decimal
   return options;
 }
@@ -90,6 +93,8 @@ void ExpectResumedRunIsTheUninterruptedRun(const energy::PointList& points) {
   ExpectSameBits(resumed.variables.s, full.variables.s, "S");
   EXPECT_EQ(resumed_summary.final_energy.total(), full_summary.final_energy.total());
   EXPECT_EQ(resumed.progress.energy_history, full.progress.energy_history);
+  EXPECT_EQ(resumed.progress.motion_history, full.progress.motion_history);
+  EXPECT_EQ(resumed.progress.noise_sigma, full.progress.noise_sigma);
 }
 
 TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
@@ -140,11 +145,22 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
   const int32_t threads = 100000;
   write_at(16, &threads, sizeof(threads));
   expect_rejected("thread count 100000");
-  // Versions 3 and 4 have no checksum. A version-3 state (from before the progress test)
-  // resumes with the test off; versions outside 3-5 are refused.
+  // Versions 3 and 4 have no checksum, and versions 3-5 no motion test: before the end mark
+  // a version-6 state keeps the noise deviation, the motions' count and the motions. A
+  // version-3 state (from before the progress test) resumes with that test off, and states
+  // older than 6 with the motion test off; versions outside 3-6 are refused.
   std::remove(path.c_str());
   WriteDenoiseState(path, state, options, false);
-  std::filesystem::resize_file(path, size - sizeof(uint64_t));
+  {
+    std::string bytes(size, '\0');
+    std::ifstream(path, std::ios::binary).read(bytes.data(), bytes.size());
+    const size_t motions = state.progress.motion_history.size();
+    const size_t end_mark = size - 2 * sizeof(uint64_t);
+    const size_t motion_fields = sizeof(double) + sizeof(uint32_t) + motions * sizeof(double);
+    bytes.erase(end_mark - motion_fields, motion_fields);
+    bytes.resize(bytes.size() - sizeof(uint64_t));  // the checksum
+    std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), bytes.size());
+  }
   auto set_version = [&](uint32_t version) { write_at(8, &version, sizeof(version)); };
   set_version(3);
   {
@@ -155,10 +171,19 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
     SetDenoiseParameter(old.parameters.front().first, old.parameters.front().second, &resumed);
     EXPECT_EQ(resumed.minimizer.progress_tolerance, 0.0);
   }
-  set_version(6);
-  expect_rejected("state file version 6");
+  set_version(7);
+  expect_rejected("state file version 7");
   set_version(4);
-  EXPECT_NE(ReadDenoiseState(path).parameters.front().first, "progress_tolerance");
+  {
+    const SavedDenoiseRun old = ReadDenoiseState(path);
+    EXPECT_NE(old.parameters.front().first, "progress_tolerance");
+    solvers::DenoiseOptions resumed;
+    for (const auto& [name, value] : old.parameters) SetDenoiseParameter(name, value, &resumed);
+    EXPECT_EQ(resumed.minimizer.motion_tolerance, 0.0);
+    EXPECT_TRUE(std::isnan(old.state.progress.noise_sigma));
+    EXPECT_EQ(old.state.progress.motion_history.size(),
+              old.state.progress.energy_history.size());
+  }
   std::filesystem::resize_file(path, size / 2);
   expect_rejected("truncated");
   {

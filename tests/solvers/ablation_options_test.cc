@@ -149,6 +149,7 @@ TEST(AblationOptions, ContinuationFollowsItsGeometricSchedule) {
   options.minimizer.max_iterations = 40;
   options.minimizer.energy_tolerance = 0.0;
   options.minimizer.progress_tolerance = 0.0;
+  options.minimizer.motion_tolerance = 0.0;
   DenoiseState state = StartDenoising(points, options);
   const SolverSummary summary = MinimizeFromState(options, &state);
   const energy::EnergyParameters& target = options.settings.energy;

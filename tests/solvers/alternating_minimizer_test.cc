@@ -2,6 +2,10 @@
 // block to the next (after the first H step puts H on the unit sphere).
 #include "solvers/alternating_minimizer.h"
 
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "test_problems.h"
@@ -39,6 +43,7 @@ AlternatingMinimizer::Options TightOptions() {
   options.max_iterations = 6;
   options.energy_tolerance = 0.0;
   options.progress_tolerance = 0.0;
+  options.motion_tolerance = 0.0;
   options.linear_solver.relative_tolerance = 1e-12;
   return options;
 }
@@ -97,6 +102,7 @@ TEST(AlternatingMinimizer, StopsWhenTheLastIterationsGainLittleAgainstTheWholeRu
   options.max_iterations = 50;
   options.energy_tolerance = 0.0;
   options.progress_tolerance = 0.05;
+  options.motion_tolerance = 0.0;
   energy::Variables v = energy::InitialVariables(problem);
   const SolverSummary summary = AlternatingMinimizer::Minimize(
       problem, Fixed(testing::BalancedParameters()), options, &v);
@@ -116,6 +122,54 @@ TEST(AlternatingMinimizer, StopsWhenTheLastIterationsGainLittleAgainstTheWholeRu
   std::string error;
   EXPECT_FALSE(options.IsValid(&error));
   EXPECT_NE(error.find("progress_tolerance"), std::string::npos);
+}
+
+// The motion rule, checked on the recorded motions: with only the motion test on, the run
+// stops at the first iteration whose last 3 motions are each at most tol x sigma, sigma the
+// noise deviation behind the scale-aware mu_l (sqrt(mu_l) / c, c = mu_l_noise_sigmas).
+TEST(AlternatingMinimizer, StopsWhenTheLastIterationsEachMoveTheOutputsLittle) {
+  const energy::Problem problem = PlaneProblem(300, 0.01, 3, 8);
+  AlternatingMinimizer::Options options;
+  options.max_iterations = 50;
+  options.energy_tolerance = 0.0;
+  options.progress_tolerance = 0.0;
+  options.motion_tolerance = 0.02;
+  SolverSettings settings;
+  settings.energy = testing::BalancedParameters();
+  energy::Variables v = energy::InitialVariables(problem);
+  const SolverSummary summary = AlternatingMinimizer::Minimize(problem, settings, options, &v);
+  ASSERT_EQ(summary.termination, TerminationType::kConvergence) << summary.message;
+  const double sigma = std::sqrt(summary.mu_l) / settings.mu_l_noise_sigmas;
+  std::vector<double> motion;
+  for (const IterationRecord& record : summary.iterations) motion.push_back(record.point_motion);
+  const size_t w = options.energy_window;
+  ASSERT_GT(motion.size(), w + 2) << "stopped too early to tell the rule apart";
+  auto met = [&](size_t t) {
+    for (size_t j = t + 1 - w; j <= t; ++j) {
+      if (!(motion[j] <= options.motion_tolerance * sigma * (1.0 + 1e-12))) return false;
+    }
+    return true;
+  };
+  EXPECT_TRUE(met(motion.size() - 1));
+  for (size_t t = w; t + 1 < motion.size(); ++t) EXPECT_FALSE(met(t)) << "iteration " << t + 1;
+  EXPECT_NE(summary.message.find("moved the output points"), std::string::npos);
+
+  // Continued from where a first call stopped (before the window could be met), the run
+  // stops at the same iteration with the same planes: the motions are carried over.
+  energy::Variables continued = energy::InitialVariables(problem);
+  MinimizerProgress progress;
+  AlternatingMinimizer::Options first = options;
+  first.max_iterations = 3;
+  AlternatingMinimizer::Minimize(problem, settings, first, &continued, nullptr, &progress);
+  const SolverSummary rest =
+      AlternatingMinimizer::Minimize(problem, settings, options, &continued, nullptr, &progress);
+  EXPECT_EQ(rest.num_iterations, summary.num_iterations);
+  EXPECT_EQ(continued.t, v.t);
+
+  options.motion_tolerance = NAN;
+  std::string error;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("motion_tolerance"), std::string::npos);
 }
 
 TEST(AlternatingMinimizer, InvalidOptionsFailWithoutWork) {

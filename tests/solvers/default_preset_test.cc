@@ -61,6 +61,7 @@ TEST(DefaultPreset, ConvergesAndMoreIterationsDoNotMakeItWorse) {
 
   options.minimizer.energy_tolerance = 0.0;  // all 50 iterations
   options.minimizer.progress_tolerance = 0.0;
+  options.minimizer.motion_tolerance = 0.0;
   options.minimizer.max_iterations = 50;
   const DenoiseResult run_on = DenoisePointSet(noisy.points, options);
   ASSERT_EQ(run_on.summary.num_iterations, options.minimizer.max_iterations);

@@ -31,6 +31,7 @@ double MeanDistanceOverDiagonal(const std::string& noise_label) {
   options.minimizer.inner_iterations = 5;
   options.minimizer.energy_tolerance = 0.0;
   options.minimizer.progress_tolerance = 0.0;
+  options.minimizer.motion_tolerance = 0.0;
   options.settings.num_threads = 2;
   const DenoiseResult result = DenoisePointSet(input, options);
   energy::PointList output;
