@@ -214,7 +214,7 @@ class AlternatingRun {
   }
 
   // Whether each of the last w motions is at most motion_tolerance x noise_sigma (a NaN
-  // motion, a run's first iteration, is not).
+  // motion, iteration 1's, is not).
   bool LastMotionsBelowTolerance(int w) const {
     const std::vector<double>& motions = state_.motion_history;
     const double bar = options_.motion_tolerance * state_.noise_sigma;

@@ -45,7 +45,7 @@ struct MinimizerProgress {
   // the scale-aware mu_l, FittingNoiseSigma); NaN until the first local step.
   double noise_sigma = NAN;
   // How far each of those iterations moved the output points (RMS, IterationRecord::
-  // point_motion), NaN for a run's first iteration (motion test).
+  // point_motion; NaN for iteration 1, which has no predecessor), for the motion test.
   std::vector<double> motion_history;
 };
 
@@ -72,9 +72,9 @@ class AlternatingMinimizer {
     double progress_tolerance = 1e-3;
     // Also stop when each of the last energy_window iterations moved the output points by
     // at most motion_tolerance x noise_sigma (RMS; MinimizerProgress::noise_sigma): the
-    // energy's last slow fall is a drift of the plane field that moves no output by more
-    // than a fraction of the noise (docs/method.md, "The motion test"). 0 disables the test
-    // (the paper preset).
+    // energy's last slow fall is a drift of the plane field that moves the outputs by a few
+    // thousandths of the noise per iteration (docs/method.md, "The motion test"). 0
+    // disables the test (the paper preset).
     double motion_tolerance = 4e-3;
     int energy_window = 3;
     // Alg. 1 line 16 (Eq. 8); false holds every s_ij at 1, the ablation of Fig. 4.
