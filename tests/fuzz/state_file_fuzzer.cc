@@ -14,7 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const lpd::solvers::DenoiseState& state = run.state;
     const int n = state.problem.num_points();
     if (static_cast<int>(state.order.size()) != n || state.variables.h.rows() != n ||
-        !state.variables.h.allFinite() || !(state.problem.frame.scale > 0.0)) {
+        !state.variables.h.allFinite() || !(state.problem.frame.scale > 0.0) ||
+        state.progress.motion_history.size() != state.progress.energy_history.size()) {
       std::abort();
     }
   } catch (const std::runtime_error&) {
