@@ -48,6 +48,16 @@ AlternatingMinimizer::Options TightOptions() {
   return options;
 }
 
+// At most 50 iterations, stopped only by the tests given a positive tolerance.
+AlternatingMinimizer::Options StoppingTests(double energy, double progress, double motion) {
+  AlternatingMinimizer::Options options;
+  options.max_iterations = 50;
+  options.energy_tolerance = energy;
+  options.progress_tolerance = progress;
+  options.motion_tolerance = motion;
+  return options;
+}
+
 TEST(AlternatingMinimizer, EnergyNeverIncreasesFromTheInitialization) {
   for (uint64_t seed : {1, 2, 3}) {
     energy::ProblemOptions problem_options;
@@ -98,11 +108,7 @@ TEST(AlternatingMinimizer, StopsOnTheEnergyWindowAndOnTheCallback) {
 // from 1) with E_{t-3} - E_t <= tol (E_1 - E_t), and only the progress test is on.
 TEST(AlternatingMinimizer, StopsWhenTheLastIterationsGainLittleAgainstTheWholeRun) {
   const energy::Problem problem = PlaneProblem(300, 0.01, 3, 8);
-  AlternatingMinimizer::Options options;
-  options.max_iterations = 50;
-  options.energy_tolerance = 0.0;
-  options.progress_tolerance = 0.05;
-  options.motion_tolerance = 0.0;
+  AlternatingMinimizer::Options options = StoppingTests(0.0, 0.05, 0.0);
   energy::Variables v = energy::InitialVariables(problem);
   const SolverSummary summary = AlternatingMinimizer::Minimize(
       problem, Fixed(testing::BalancedParameters()), options, &v);
@@ -129,11 +135,7 @@ TEST(AlternatingMinimizer, StopsWhenTheLastIterationsGainLittleAgainstTheWholeRu
 // noise deviation behind the scale-aware mu_l (sqrt(mu_l) / c, c = mu_l_noise_sigmas).
 TEST(AlternatingMinimizer, StopsWhenTheLastIterationsEachMoveTheOutputsLittle) {
   const energy::Problem problem = PlaneProblem(300, 0.01, 3, 8);
-  AlternatingMinimizer::Options options;
-  options.max_iterations = 50;
-  options.energy_tolerance = 0.0;
-  options.progress_tolerance = 0.0;
-  options.motion_tolerance = 0.02;
+  AlternatingMinimizer::Options options = StoppingTests(0.0, 0.0, 0.02);
   SolverSettings settings;
   settings.energy = testing::BalancedParameters();
   energy::Variables v = energy::InitialVariables(problem);
