@@ -312,7 +312,25 @@ void FlagOtherLayerWithinReach(const energy::PointList& outputs,
   for (int r = 0; r < count; ++r) anchor_points[r] = outputs[anchors[r]];
   const double min_cosine = std::cos(kSidesReferenceMaxAngleDegrees * M_PI / 180.0);
   const double reach = kSidesOtherLayerReachBands * band;
-  const energy::NearestNeighbors search(anchor_points);
+  // The share is read over every stride-th anchor (the points are in Morton order, so an
+  // even spread), the stride such that about kSidesOtherLayerSampled of them lie within the
+  // reach: the median count over kSidesOtherLayerStrideProbes anchors spread over the list.
+  int stride = 1;
+  {
+    const energy::NearestNeighbors search(anchor_points);
+    const int probes = std::min(count, kSidesOtherLayerStrideProbes);
+    std::vector<double> within_counts(probes);
+    search.ForEachWithin(probes, num_threads,
+                         [&](int q) { return anchor_points[q * (count / probes)]; },
+                         [reach](int) { return reach * reach; },
+                         [&](int q, const std::vector<int>& within) {
+                           within_counts[q] = static_cast<double>(within.size());
+                         });
+    stride = std::max(1, static_cast<int>(Median(&within_counts) / kSidesOtherLayerSampled));
+  }
+  energy::PointList sampled((count + stride - 1) / stride);
+  for (size_t s = 0; s < sampled.size(); ++s) sampled[s] = anchor_points[s * stride];
+  const energy::NearestNeighbors search(sampled);
   search.ForEachWithin(count, num_threads, [&](int r) { return anchor_points[r]; },
                        [reach](int) { return reach * reach; },
                        [&](int r, const std::vector<int>& within) {
@@ -320,7 +338,8 @@ void FlagOtherLayerWithinReach(const energy::PointList& outputs,
                          if ((*other_layer)[i]) return;
                          const energy::Point3& n = normals[i];
                          int facing = 0, beyond = 0;
-                         for (int b : within) {
+                         for (int s : within) {
+                           const int b = s * stride;
                            if (std::abs(n.dot(normals[anchors[b]])) < min_cosine) continue;
                            ++facing;
                            beyond += !(std::abs(n.dot(anchor_points[b] - outputs[i])) < band);

@@ -222,6 +222,10 @@ constexpr int kMinUnsplitRegionPoints = 200;
 // R = 1.22 g: 4 bands reached 3.3 bands, and sheets 5.7 deviations apart at 50K points and 1%
 // read 3.4 (their band 1.66 deviations; P2M x 1e4 0.647, 0.257 within 5 bands).
 constexpr double kSidesOtherLayerReachBands = 5.0;
+// The share is read over a subsample of the outputs, about this many within the reach (at 50K
+// points the reach holds 3,000-4,000 outputs of two layers).
+constexpr int kSidesOtherLayerSampled = 300;
+constexpr int kSidesOtherLayerStrideProbes = 64;
 
 // kMedianAbsToSigma times the median of |n_i.(inputs[i] - outputs[i])| over the anchors
 // (indices into all three, normals of unit length); 0 without anchors.

@@ -7,7 +7,8 @@
 // against brute force; one Gaussian sheet does not move, also with its farthest points
 // flagged as outliers; the regions' moments and medians against brute-force nearest points,
 // and their growth from seeds through neighbouring regions between the two bars, with the
-// seeds counted over both halves of a subsample run.
+// seeds counted over both halves of a subsample run; where the outputs are dense, the other
+// layer within the reach read over an even subsample, against brute force.
 #include "solvers/merged_sides.h"
 
 #include <algorithm>
@@ -794,6 +795,58 @@ TEST(SidesReference, IsTheMeanHeightOfTheOutputsNearestAcrossTheNormalByBruteFor
   EXPECT_LT(flagged, tested);
   // No noise estimate: the outputs themselves.
   EXPECT_EQ(SidesReference(outputs, normals, anchors, 0.0, 2), outputs);
+}
+
+// Two layers 2-6 bands apart (the gap grows along x), dense enough that the reach holds
+// about 1,000 outputs: the share is read over every stride-th anchor, the stride from the
+// median count within the reach over kSidesOtherLayerStrideProbes anchors spread over the
+// list, all counted by brute force.
+TEST(FlagOtherLayerWithinReach, WhereDenseTheShareIsReadOverAnEvenSubsampleByBruteForce) {
+  std::mt19937_64 random(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double band = 0.03, reach = kSidesOtherLayerReachBands * band;
+  energy::PointList outputs, normals;
+  std::vector<int> anchors;
+  for (int i = 0; i < 24000; ++i) {
+    const double x = unit(random), y = unit(random);
+    const double gap = band * (2.0 + 4.0 * x);
+    outputs.emplace_back(x, y, i % 2 == 0 ? 0.0 : gap);
+    normals.emplace_back(0.0, 0.0, 1.0);
+    anchors.push_back(i);
+  }
+  std::vector<uint8_t> flagged(outputs.size(), 0), flagged_one_thread(outputs.size(), 0);
+  FlagOtherLayerWithinReach(outputs, normals, anchors, band, 2, &flagged);
+  FlagOtherLayerWithinReach(outputs, normals, anchors, band, 1, &flagged_one_thread);
+  EXPECT_EQ(flagged_one_thread, flagged);
+
+  const int count = static_cast<int>(anchors.size());
+  const int probes = kSidesOtherLayerStrideProbes;
+  std::vector<double> within_counts;
+  for (int q = 0; q < probes; ++q) {
+    const energy::Point3& centre = outputs[anchors[q * (count / probes)]];
+    int within = 0;
+    for (int j : anchors) within += (outputs[j] - centre).norm() < reach;
+    within_counts.push_back(within);
+  }
+  const double median_count = Median(&within_counts);
+  const int stride = std::max(1, static_cast<int>(median_count / kSidesOtherLayerSampled));
+  EXPECT_GE(stride, 3);
+  int tested = 0, seen = 0;
+  for (int i = 0; i < count; i += 37) {
+    int facing = 0, beyond = 0;
+    for (int s = 0; s * stride < count; ++s) {
+      const int j = anchors[s * stride];
+      if ((outputs[j] - outputs[i]).squaredNorm() >= reach * reach) continue;
+      ++facing;  // all normals agree
+      beyond += std::abs(outputs[j].z() - outputs[i].z()) >= band;
+    }
+    EXPECT_EQ(flagged[i] != 0, beyond >= kSidesOtherLayerShare * facing) << "point " << i;
+    seen += flagged[i];
+    ++tested;
+  }
+  // Layers near and far: both answers occur.
+  EXPECT_GT(seen, tested / 5);
+  EXPECT_LT(seen, 4 * tested / 5);
 }
 
 TEST(SidesReference, OutputsSpreadOverAMergedSlabGetItsMidPlane) {
