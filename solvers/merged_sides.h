@@ -245,7 +245,10 @@ energy::PointList SidesReference(const energy::PointList& outputs,
 // Flags in `other_layer` (per output, as SidesReference sets it) each anchor not flagged yet
 // where kSidesOtherLayerShare or more of the anchors' outputs within
 // kSidesOtherLayerReachBands x `band` that face its way (normals within
-// kSidesReferenceMaxAngleDegrees) lie beyond the band. Deterministic for any thread count.
+// kSidesReferenceMaxAngleDegrees) lie beyond the band, the anchors read being every s-th of
+// the list, s = max(1, floor(m / kSidesOtherLayerSampled)) with m the median count of anchors
+// within the reach of anchors 0, c, 2c, ... (kSidesOtherLayerStrideProbes of them, c the
+// count over that number). Deterministic for any thread count.
 // SeparateMergedSides runs it only where the regions read as merged without it.
 void FlagOtherLayerWithinReach(const energy::PointList& outputs,
                                const energy::PointList& normals,
