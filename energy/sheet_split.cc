@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "energy/even_key_sort.h"
+#include "energy/scatter_sum.h"
 
 namespace lpd::energy {
 namespace {
@@ -19,12 +20,10 @@ bool PlaneNormal(const Point3* points, int count, Eigen::Vector3d* normal,
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (int a = 0; a < count; ++a) sum += points[a];
   *mean = sum / count;
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (int a = 0; a < count; ++a) {
-    const Eigen::Vector3d d = points[a] - *mean;
-    scatter += d * d.transpose();
-  }
-  *normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+  ScatterSum scatter;
+  for (int a = 0; a < count; ++a) scatter.Add(points[a] - *mean);
+  *normal =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter.Matrix()).eigenvectors().col(0);
   return true;
 }
 
@@ -40,15 +39,15 @@ void RunNormals(const std::vector<Point3>& points, const std::vector<double>& of
     ++size[side];
   }
   const Eigen::Vector3d mean[2] = {sum[0] / size[0], sum[1] / size[1]};
-  Eigen::Matrix3d scatter[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  ScatterSum scatter[2];
   for (size_t a = 0; a < points.size(); ++a) {
     const int side = split.Side(offsets[a]);
-    const Eigen::Vector3d d = points[a] - mean[side];
-    scatter[side] += d * d.transpose();
+    scatter[side].Add(points[a] - mean[side]);
   }
   for (int side = 0; side < 2; ++side) {
-    normal[side] =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter[side]).eigenvectors().col(0);
+    normal[side] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter[side].Matrix())
+                       .eigenvectors()
+                       .col(0);
   }
 }
 
@@ -58,13 +57,13 @@ double FootprintDifference(const std::vector<Point3>& points, const std::vector<
                            const Eigen::Vector3d& normal, const Eigen::Vector3d& origin,
                            double threshold) {
   Eigen::Vector3d sum[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
-  Eigen::Matrix3d moment[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  ScatterSum moment[2];
   int size[2] = {0, 0};
   for (size_t a = 0; a < offsets.size(); ++a) {
     const Eigen::Vector3d in_plane = points[a] - origin - offsets[a] * normal;
     const int side = offsets[a] < threshold ? 0 : 1;
     sum[side] += in_plane;
-    moment[side] += in_plane * in_plane.transpose();
+    moment[side].Add(in_plane);
     ++size[side];
   }
   if (size[0] == 0 || size[1] == 0) return 0.0;
@@ -72,7 +71,7 @@ double FootprintDifference(const std::vector<Point3>& points, const std::vector<
   Eigen::Matrix3d covariance[2];
   for (int side = 0; side < 2; ++side) {
     mean[side] = sum[side] / size[side];
-    covariance[side] = moment[side] / size[side] - mean[side] * mean[side].transpose();
+    covariance[side] = moment[side].Matrix() / size[side] - mean[side] * mean[side].transpose();
   }
   const double spread = 0.5 * (covariance[0].trace() + covariance[1].trace());
   if (!(spread > 0.0)) return 0.0;

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "energy/nearest_neighbors.h"
+#include "energy/scatter_sum.h"
 #include "energy/sheet_split.h"
 #include "energy/smallest_first.h"
 #include "solvers/median.h"
@@ -223,12 +224,11 @@ void SetLayerCorrections(const std::vector<int>& read, double deviation,
 
 // The dominant direction of the normals of the outputs `nearest[0, found)`.
 Eigen::Vector3d LayerNormal(const energy::PointList& normals, const int* nearest, int found) {
-  Eigen::Matrix3d normal_moment = Eigen::Matrix3d::Zero();
-  for (int b = 0; b < found; ++b) {
-    const energy::Point3& n = normals[nearest[b]];
-    normal_moment += n * n.transpose();
-  }
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_moment).eigenvectors().col(2);
+  energy::ScatterSum normal_moment;
+  for (int b = 0; b < found; ++b) normal_moment.Add(normals[nearest[b]]);
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_moment.Matrix())
+      .eigenvectors()
+      .col(2);
 }
 
 // The layers along `normal` around `origin` of the kLayerNeighbors outputs nearest across it

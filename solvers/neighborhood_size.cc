@@ -15,6 +15,7 @@
 #include "energy/coordinate_quantization.h"
 #include "energy/normalization.h"
 #include "energy/nearest_neighbors.h"
+#include "energy/scatter_sum.h"
 #include "energy/problem.h"
 #include "energy/sheet_split.h"
 #include "energy/split_search.h"
@@ -192,14 +193,13 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];
     mean /= k + 1;
-    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    energy::ScatterSum scatter;
     double squared_sum = 0.0;
     for (int a = 0; a <= k; ++a) {
-      const Eigen::Vector3d d = normalized[nearest[a]] - mean;
-      scatter += d * d.transpose();
+      scatter.Add(normalized[nearest[a]] - mean);
       squared_sum += (normalized[nearest[a]] - normalized[i]).squaredNorm();
     }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter.Matrix());
     const Eigen::Vector3d normal = eigen.eigenvectors().col(0);
     for (int a = 0; a <= k; ++a) {
       offsets[static_cast<size_t>(query) * (k + 1) + a] =
@@ -254,13 +254,10 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (int a : own) mean += normalized[members[row + a]];
     mean /= m;
-    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-    for (int a : own) {
-      const Eigen::Vector3d d = normalized[members[row + a]] - mean;
-      scatter += d * d.transpose();
-    }
+    energy::ScatterSum scatter;
+    for (int a : own) scatter.Add(normalized[members[row + a]] - mean);
     const Eigen::Vector3d normal =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter.Matrix()).eigenvectors().col(0);
     // The plane of m points absorbs three degrees of freedom, the probe's k + 1 as many:
     // scaled so that the correction below, made for k + 1, fits.
     const double dof = std::sqrt((m / (m - 3.0)) / ((k + 1.0) / (k - 2.0)));

@@ -1,0 +1,40 @@
+// lpd: a sum of outer products d d^T of 3-vectors (a scatter or second-moment matrix), kept as
+// the six scalars of its lower triangle.
+//
+// `m += d * d.transpose()` on an Eigen::Matrix3d writes the outer product to a temporary on the
+// stack and adds it from there, and the 16-byte loads of values just stored as 8-byte halves
+// stall (over half of the sheet split's own time at 50K points, docs/performance.md). The sums
+// here add the same products in the same order (d_r d_c and d_c d_r are the same number), so
+// Matrix() holds the same bits as the Eigen expression would.
+#ifndef LPD_ENERGY_SCATTER_SUM_H_
+#define LPD_ENERGY_SCATTER_SUM_H_
+
+#include <Eigen/Core>
+
+namespace lpd::energy {
+
+class ScatterSum {
+ public:
+  void Add(const Eigen::Vector3d& d) {
+    xx_ += d.x() * d.x();
+    yx_ += d.y() * d.x();
+    zx_ += d.z() * d.x();
+    yy_ += d.y() * d.y();
+    zy_ += d.z() * d.y();
+    zz_ += d.z() * d.z();
+  }
+
+  // The full symmetric matrix.
+  Eigen::Matrix3d Matrix() const {
+    Eigen::Matrix3d m;
+    m << xx_, yx_, zx_, yx_, yy_, zy_, zx_, zy_, zz_;
+    return m;
+  }
+
+ private:
+  double xx_ = 0.0, yx_ = 0.0, zx_ = 0.0, yy_ = 0.0, zy_ = 0.0, zz_ = 0.0;
+};
+
+}  // namespace lpd::energy
+
+#endif  // LPD_ENERGY_SCATTER_SUM_H_
