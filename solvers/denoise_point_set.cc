@@ -266,7 +266,8 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
   if (options.solver == Solver::kCeres) {
     if (settings.mu_l_noise_sigmas > 0.0) {  // the joint solve starts from fitted planes
       settings.energy.mu_l =
-          NoiseScaledMuL(state->problem, state->variables, settings.mu_l_noise_sigmas);
+          NoiseScaledMuL(FittingNoiseSigma(state->problem, state->variables),
+                         settings.mu_l_noise_sigmas);
     }
     summary = CeresJointSolver::Minimize(state->problem, settings, options.joint,
                                          &state->variables, callback);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 #include "energy/nearest_neighbors.h"
@@ -315,22 +316,25 @@ void FlagOtherLayerWithinReach(const energy::PointList& outputs,
   // The share is read over every stride-th anchor (the points are in Morton order, so an
   // even spread), the stride such that about kSidesOtherLayerSampled of them lie within the
   // reach: the median count over kSidesOtherLayerStrideProbes anchors spread over the list.
-  int stride = 1;
-  {
-    const energy::NearestNeighbors search(anchor_points);
-    const int probes = std::min(count, kSidesOtherLayerStrideProbes);
-    std::vector<double> within_counts(probes);
-    search.ForEachWithin(probes, num_threads,
-                         [&](int q) { return anchor_points[q * (count / probes)]; },
-                         [reach](int) { return reach * reach; },
-                         [&](int q, const std::vector<int>& within) {
-                           within_counts[q] = static_cast<double>(within.size());
-                         });
-    stride = std::max(1, static_cast<int>(Median(&within_counts) / kSidesOtherLayerSampled));
+  const energy::NearestNeighbors all(anchor_points);
+  const int probes = std::min(count, kSidesOtherLayerStrideProbes);
+  std::vector<double> within_counts(probes);
+  all.ForEachWithin(probes, num_threads,
+                    [&](int q) { return anchor_points[q * (count / probes)]; },
+                    [reach](int) { return reach * reach; },
+                    [&](int q, const std::vector<int>& within) {
+                      within_counts[q] = static_cast<double>(within.size());
+                    });
+  const int stride =
+      std::max(1, static_cast<int>(Median(&within_counts) / kSidesOtherLayerSampled));
+  energy::PointList sampled;
+  std::optional<energy::NearestNeighbors> sampled_search;
+  if (stride > 1) {
+    sampled.resize((count + stride - 1) / stride);
+    for (size_t s = 0; s < sampled.size(); ++s) sampled[s] = anchor_points[s * stride];
+    sampled_search.emplace(sampled);
   }
-  energy::PointList sampled((count + stride - 1) / stride);
-  for (size_t s = 0; s < sampled.size(); ++s) sampled[s] = anchor_points[s * stride];
-  const energy::NearestNeighbors search(sampled);
+  const energy::NearestNeighbors& search = stride > 1 ? *sampled_search : all;
   search.ForEachWithin(count, num_threads, [&](int r) { return anchor_points[r]; },
                        [reach](int) { return reach * reach; },
                        [&](int r, const std::vector<int>& within) {

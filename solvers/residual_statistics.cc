@@ -70,11 +70,6 @@ double NoiseScaledMuL(double noise_sigma, double noise_sigmas) {
   return std::max(scale * scale, std::numeric_limits<double>::min());
 }
 
-double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,
-                      double noise_sigmas) {
-  return NoiseScaledMuL(FittingNoiseSigma(problem, v), noise_sigmas);
-}
-
 double RmsProjectedPointChange(const energy::Problem& problem, const energy::PlaneField& old_t,
                                const energy::PlaneField& new_t, int num_threads) {
   const int n = problem.num_points();

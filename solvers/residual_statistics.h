@@ -42,10 +42,6 @@ double FittingNoiseSigma(const energy::Problem& problem, const energy::Variables
 // mu_l = (c sigma)^2 (the scale-aware mu_l), c = noise_sigmas, sigma = noise_sigma.
 double NoiseScaledMuL(double noise_sigma, double noise_sigmas);
 
-// NoiseScaledMuL at sigma = FittingNoiseSigma(problem, v).
-double NoiseScaledMuL(const energy::Problem& problem, const energy::Variables& v,
-                      double noise_sigmas);
-
 // sqrt(mean_i |P_new(p_i) - P_old(p_i)|^2), P(p) the projection of p onto the plane t_i of
 // `old_t` or `new_t` (Sec. 3.4): how far one iteration moved the output points. Points whose
 // plane has no normal in either field count as unmoved. Deterministic in any thread count.

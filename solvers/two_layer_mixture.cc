@@ -120,13 +120,14 @@ bool FitTwoLayerMixture(const std::vector<double>& heights, double lower_start,
     const MixtureVector start = ToVector(f, unit);
     const MixtureVector r = ToVector(first, unit) - start;
     const MixtureVector v = ToVector(second, unit) - ToVector(first, unit) - r;
+    auto extrapolate = [&](double a) { return FromVector(start - 2.0 * a * r + a * a * v, unit); };
     double alpha = v.norm() > 0.0 ? -r.norm() / v.norm() : -1.0;
     alpha = std::clamp(alpha, -reach, -1.0);
     if (alpha == -reach) reach *= 4.0;
-    TwoLayerMixture extrapolated = FromVector(start - 2.0 * alpha * r + alpha * alpha * v, unit);
+    TwoLayerMixture extrapolated = extrapolate(alpha);
     while (!Usable(extrapolated) && alpha < -1.0) {
       alpha = std::min(-1.0, 0.5 * (alpha - 1.0));
-      extrapolated = FromVector(start - 2.0 * alpha * r + alpha * alpha * v, unit);
+      extrapolated = extrapolate(alpha);
     }
     if (!Usable(extrapolated)) extrapolated = second;
     if (steps == kMaxMixtureIterations) {
