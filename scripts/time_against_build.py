@@ -28,6 +28,7 @@ import sys
 import tempfile
 import time
 
+sys.dont_write_bytecode = True  # no __pycache__ left in scripts/ by the import below
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from learned_benchmark import ROOT, THIN_SHAPES, default_meshes, expand  # noqa: E402
 
