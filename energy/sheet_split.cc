@@ -17,13 +17,8 @@ namespace {
 bool PlaneNormal(const Point3* points, int count, Eigen::Vector3d* normal,
                  Eigen::Vector3d* mean) {
   if (count < 3) return false;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (int a = 0; a < count; ++a) sum += points[a];
-  *mean = sum / count;
-  ScatterSum scatter;
-  for (int a = 0; a < count; ++a) scatter.Add(points[a] - *mean);
-  *normal =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter.Matrix()).eigenvectors().col(0);
+  *normal = LeastSquaresPlaneNormal(count, [points](int a) -> const Point3& { return points[a]; },
+                                    mean);
   return true;
 }
 

@@ -190,17 +190,11 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     if (kept) std::copy_n(nearest, found, kept->nearest.data() + static_cast<size_t>(i) * searched);
     found = std::min(found, split_points);
     // N(i) u {i}: the search finds i itself first (or a duplicate of it at distance 0).
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int a = 0; a <= k; ++a) mean += normalized[nearest[a]];
-    mean /= k + 1;
-    energy::ScatterSum scatter;
+    const auto member = [&](int a) -> const energy::Point3& { return normalized[nearest[a]]; };
+    Eigen::Vector3d mean;
+    const Eigen::Vector3d normal = energy::LeastSquaresPlaneNormal(k + 1, member, &mean);
     double squared_sum = 0.0;
-    for (int a = 0; a <= k; ++a) {
-      scatter.Add(normalized[nearest[a]] - mean);
-      squared_sum += (normalized[nearest[a]] - normalized[i]).squaredNorm();
-    }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter.Matrix());
-    const Eigen::Vector3d normal = eigen.eigenvectors().col(0);
+    for (int a = 0; a <= k; ++a) squared_sum += (member(a) - normalized[i]).squaredNorm();
     for (int a = 0; a <= k; ++a) {
       offsets[static_cast<size_t>(query) * (k + 1) + a] =
           normal.dot(normalized[nearest[a]] - mean);
@@ -251,13 +245,10 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
     }
     const int m = static_cast<int>(own.size());
     if (m < 4) continue;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int a : own) mean += normalized[members[row + a]];
-    mean /= m;
-    energy::ScatterSum scatter;
-    for (int a : own) scatter.Add(normalized[members[row + a]] - mean);
-    const Eigen::Vector3d normal =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter.Matrix()).eigenvectors().col(0);
+    Eigen::Vector3d mean;
+    const Eigen::Vector3d normal = energy::LeastSquaresPlaneNormal(
+        m, [&](int b) -> const energy::Point3& { return normalized[members[row + own[b]]]; },
+        &mean);
     // The plane of m points absorbs three degrees of freedom, the probe's k + 1 as many:
     // scaled so that the correction below, made for k + 1, fits.
     const double dof = std::sqrt((m / (m - 3.0)) / ((k + 1.0) / (k - 2.0)));
