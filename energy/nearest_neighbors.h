@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
+#include "energy/cell_grid.h"
 #include "energy/even_key_sort.h"
 #include "energy/point3.h"
 #include "energy/point_kd_tree.h"
@@ -42,6 +45,8 @@ class NearestNeighbors {
   template <typename Query, typename Visit>
   void ForEach(int count, int k, int num_threads, const Query& query, const Visit& visit) const {
     const bool radius_first = k >= kRadiusFirstMinK;
+    const std::optional<CellGrid> grid =
+        radius_first ? GridForSearch(count, k, query) : std::nullopt;
 #pragma omp parallel num_threads(num_threads)
     {
       std::vector<int> nearest(k);
@@ -51,8 +56,8 @@ class NearestNeighbors {
       for (int q = 0; q < count; ++q) {
         const Point3 p = query(q);
         const int found = radius_first
-                              ? by_radius.Search(tree_, p, k, nearest.data(),
-                                                 squared_distances.data())
+                              ? by_radius.Search(tree_, grid ? &*grid : nullptr, p, k,
+                                                 nearest.data(), squared_distances.data())
                               : static_cast<int>(tree_.knnSearch(p.data(), k, nearest.data(),
                                                                  squared_distances.data()));
         visit(q, nearest.data(), squared_distances.data(), found);
@@ -84,14 +89,42 @@ class NearestNeighbors {
   }
 
  private:
+  // Cells of half the median distance to the k-th nearest of up to kGridSampleQueries of the
+  // queries, spread over them: a guessed radius (kGuessGrowth over a neighbour's) spans about
+  // five cells. None where that distance is 0 (most points repeated): the tree gathers.
+  template <typename Query>
+  std::optional<CellGrid> GridForSearch(int count, int k, const Query& query) const {
+    const int samples = std::min(count, kGridSampleQueries);
+    std::vector<double> kth;
+    std::vector<int> nearest(k);
+    std::vector<double> squared_distances(k);
+    for (int s = 0; s < samples; ++s) {
+      const Point3 p = query(static_cast<int>(static_cast<int64_t>(s) * count / samples));
+      const int found = static_cast<int>(
+          tree_.knnSearch(p.data(), k, nearest.data(), squared_distances.data()));
+      if (found > 0) kth.push_back(squared_distances[found - 1]);
+    }
+    if (kth.empty()) return std::nullopt;
+    std::nth_element(kth.begin(), kth.begin() + kth.size() / 2, kth.end());
+    const double cell_size = 0.5 * std::sqrt(kth[kth.size() / 2]);
+    if (!(cell_size > 0.0) || !std::isfinite(cell_size)) return std::nullopt;
+    return CellGrid(adaptor_.points, cell_size);
+  }
+
+  static constexpr int kGridSampleQueries = 32;
+
   // One thread's k-nearest search by radius: exact, since the k nearest lie within any
   // radius that holds k points; a guess that holds fewer falls back to nanoflann's search.
+  // The points within a radius are gathered by `grid` where given, else by the tree: the
+  // same points with the same squared distances (cell_grid.h).
   class KnnByRadius {
    public:
-    int Search(const L2PointKdTree& tree, const Point3& p, int k, int* nearest,
-               double* squared_distances) {
+    int Search(const L2PointKdTree& tree, const CellGrid* grid, const Point3& p, int k,
+               int* nearest, double* squared_distances) {
+      tree_ = &tree;
+      grid_ = grid;
       matches_.clear();
-      if (squared_radius_ > 0.0) Within(tree, p, squared_radius_);
+      if (squared_radius_ > 0.0) Within(p, squared_radius_);
       if (static_cast<int>(matches_.size()) < k) {
         // The guess holds fewer than k: nanoflann's search gives the k-th distance, and the
         // points within it, ties included, are gathered again (all of them if fewer than k).
@@ -100,7 +133,7 @@ class NearestNeighbors {
         if (found < k) {
           for (int a = 0; a < found; ++a) matches_.emplace_back(nearest[a], squared_distances[a]);
         } else {
-          Within(tree, p, std::nextafter(squared_distances[k - 1], HUGE_VAL));
+          Within(p, std::nextafter(squared_distances[k - 1], HUGE_VAL));
         }
       }
       // The k nearest by (distance, index), whichever search found them: the same order for
@@ -129,9 +162,13 @@ class NearestNeighbors {
 
    private:
     // The points at squared distances under `squared_radius` from p, in matches_.
-    void Within(const L2PointKdTree& tree, const Point3& p, double squared_radius) {
-      tree.radiusSearch(p.data(), squared_radius, matches_,
-                        nanoflann::SearchParams(32, 0.0f, false));
+    void Within(const Point3& p, double squared_radius) {
+      if (grid_) {
+        grid_->Within(p, squared_radius, &matches_);
+      } else {
+        tree_->radiusSearch(p.data(), squared_radius, matches_,
+                            nanoflann::SearchParams(32, 0.0f, false));
+      }
     }
 
     // The next guess, in squared distance, over this query's k-th: neighbouring queries
@@ -140,6 +177,8 @@ class NearestNeighbors {
     static constexpr double kMaxGuessRise = 4.0;
     double squared_radius_ = 0.0;
     std::vector<std::pair<int, double>> matches_;
+    const L2PointKdTree* tree_ = nullptr;
+    const CellGrid* grid_ = nullptr;
   };
 
   PointListAdaptor adaptor_;

@@ -79,6 +79,27 @@ TEST(NearestNeighbors, FindsTheKNearestFromAGuessedRadiusByBruteForce) {
   }
 }
 
+// Points repeated more than k times: the k-th nearest is at distance 0 for most queries, so no
+// cell grid is built and the tree gathers; the result is still brute force's.
+TEST(NearestNeighbors, FindsTheKNearestAmongPointsRepeatedMoreThanKTimes) {
+  const PointList distinct = RandomPoints(40, 7);
+  PointList points;
+  for (int copy = 0; copy < 30; ++copy) {
+    points.insert(points.end(), distinct.begin(), distinct.end());
+  }
+  const NearestNeighbors search(points);
+  const int k = NearestNeighbors::kRadiusFirstMinK;
+  search.ForEach(static_cast<int>(points.size()), k, 2, [&](int q) { return points[q]; },
+                 [&](int q, const int* nearest, const double* squared, int found) {
+                   const auto all = ByDistance(points, points[q]);
+                   ASSERT_EQ(found, k);
+                   for (int b = 0; b < k; ++b) {
+                     ASSERT_EQ(nearest[b], all[b].second);
+                     ASSERT_EQ(squared[b], all[b].first);
+                   }
+                 });
+}
+
 TEST(NearestNeighbors, FindsAllPointsWhenFewerThanKFromAGuessedRadius) {
   const PointList points = RandomPoints(150, 6);
   const NearestNeighbors search(points);
