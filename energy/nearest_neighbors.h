@@ -67,10 +67,22 @@ class NearestNeighbors {
 
   // For q in [0, count), on `num_threads` OpenMP threads: finds the points within
   // sqrt(squared_radius(q)) of query(q) and calls visit(q, within) with their indices, in
-  // the order of the tree's traversal (the same for any thread count), not by distance.
+  // an order that is the same for any thread count but not by distance (by cell of a grid
+  // of half the median radius, cell_grid.h, or the tree's traversal where that is 0).
   template <typename Query, typename SquaredRadius, typename Visit>
   void ForEachWithin(int count, int num_threads, const Query& query,
                      const SquaredRadius& squared_radius, const Visit& visit) const {
+    std::optional<CellGrid> grid;
+    if (count > 0) {
+      const int samples = std::min(count, kGridSampleQueries);
+      std::vector<double> radii(samples);
+      for (int s = 0; s < samples; ++s) {
+        radii[s] = squared_radius(static_cast<int>(static_cast<int64_t>(s) * count / samples));
+      }
+      std::nth_element(radii.begin(), radii.begin() + samples / 2, radii.end());
+      const double cell_size = 0.5 * std::sqrt(radii[samples / 2]);
+      if (cell_size > 0.0 && std::isfinite(cell_size)) grid.emplace(adaptor_.points, cell_size);
+    }
 #pragma omp parallel num_threads(num_threads)
     {
       std::vector<std::pair<int, double>> matches;
@@ -80,7 +92,11 @@ class NearestNeighbors {
       for (int q = 0; q < count; ++q) {
         const Point3 p = query(q);
         matches.clear();
-        tree_.radiusSearch(p.data(), squared_radius(q), matches, unsorted);
+        if (grid) {
+          grid->Within(p, squared_radius(q), &matches);
+        } else {
+          tree_.radiusSearch(p.data(), squared_radius(q), matches, unsorted);
+        }
         within.resize(matches.size());
         for (size_t m = 0; m < matches.size(); ++m) within[m] = matches[m].first;
         visit(q, within);

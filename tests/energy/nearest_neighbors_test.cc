@@ -112,11 +112,10 @@ TEST(NearestNeighbors, FindsAllPointsWhenFewerThanKFromAGuessedRadius) {
                  });
 }
 
-TEST(NearestNeighbors, FindsThePointsWithinARadiusByBruteForceForAnyThreadCount) {
-  const PointList points = RandomPoints(2000, 3);
-  const PointList queries = RandomPoints(50, 4);
-  const NearestNeighbors search(points);
-  auto squared_radius = [](int q) { return 0.01 * (1 + q % 5); };
+template <typename SquaredRadius>
+void ExpectWithinByBruteForce(const PointList& points, const PointList& queries,
+                              const NearestNeighbors& search,
+                              const SquaredRadius& squared_radius) {
   std::vector<std::vector<int>> found[2];
   for (int threads : {1, 2}) {
     std::vector<std::vector<int>>& result = found[threads - 1];
@@ -136,7 +135,21 @@ TEST(NearestNeighbors, FindsThePointsWithinARadiusByBruteForceForAnyThreadCount)
     std::vector<int> within = found[1][q];
     std::sort(within.begin(), within.end());
     EXPECT_EQ(within, expected) << "query " << q;
-    EXPECT_FALSE(expected.empty());
+    EXPECT_EQ(expected.empty(), squared_radius(static_cast<int>(q)) == 0.0) << "query " << q;
+  }
+}
+
+// Radii that vary by query, and radii that are 0 for most queries (no cell grid then: the
+// tree gathers).
+TEST(NearestNeighbors, FindsThePointsWithinARadiusByBruteForceForAnyThreadCount) {
+  const PointList points = RandomPoints(2000, 3);
+  const PointList queries = RandomPoints(50, 4);
+  const NearestNeighbors search(points);
+  for (bool mostly_zero : {false, true}) {
+    auto squared_radius = [mostly_zero](int q) {
+      return mostly_zero && q % 7 != 0 ? 0.0 : 0.01 * (1 + q % 5);
+    };
+    ExpectWithinByBruteForce(points, queries, search, squared_radius);
   }
 }
 
