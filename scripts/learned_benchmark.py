@@ -12,7 +12,7 @@ the table keeps, per noise level and size, the setting with the lowest mean CD o
 
 Usage:
   scripts/learned_benchmark.py [--meshes FILE_OR_DIR ...] [--sizes 10000 50000]
-                               [--sigmas 0.01 0.02 0.03] [--no-thin]
+                               [--sigmas 0.01 0.02 0.03] [--no-thin] [--seed 1]
                                [--variant NAME=VALUE[,VALUE...] ...] [--results DIR]
   scripts/learned_benchmark.py --table-only --results DIR
 Default meshes: every mesh of ${LPD_DATA:-../shared/data}/meshes except the 8-vertex cube,
@@ -60,11 +60,11 @@ def expand(paths):
     return meshes
 
 
-def write_config(path, meshes, sizes, sigmas, thin, variants):
+def write_config(path, meshes, sizes, sigmas, thin, variants, seed):
     lines = [
         "# Written by scripts/learned_benchmark.py: the learned denoisers' benchmark protocol.",
         "name: learned_benchmark",
-        "seed: 1",
+        f"seed: {seed}",
         "parallel_cells: 1",
         "datasets:",
     ]
@@ -191,7 +191,11 @@ def main():
     parser.add_argument("--sizes", nargs="+", type=int, default=[10000, 50000])
     parser.add_argument("--sigmas", nargs="+", type=float, default=[0.01, 0.02, 0.03])
     parser.add_argument("--no-thin", action="store_true", help="leave out the thin parts")
-    parser.add_argument("--results", default="results/learned_benchmark")
+    parser.add_argument("--seed", type=int, default=1,
+                        help="the draws' seed (samples and noise); the tables in docs/ are seed 1")
+    parser.add_argument("--results",
+                        help="results directory (default: results/learned_benchmark, with "
+                             "_seedN after it for a seed other than 1)")
     parser.add_argument("--threads", type=int, default=0, help="0: all cores")
     parser.add_argument("--table-only", action="store_true", help="only print the tables")
     parser.add_argument("--variant", action="append", default=[], metavar="NAME=VALUES",
@@ -199,12 +203,14 @@ def main():
                              "values (repeatable), e.g. k_radius_sigmas=3.5,4.6")
     parser.add_argument("--lpd", default=str(ROOT / "build" / "lpd"), help="the lpd binary")
     args = parser.parse_args()
-    results = pathlib.Path(args.results)
+    default_results = "results/learned_benchmark" + (f"_seed{args.seed}" if args.seed != 1 else "")
+    results = pathlib.Path(args.results or default_results)
     if not args.table_only:
         meshes = expand(args.meshes) if args.meshes else default_meshes()
         results.mkdir(parents=True, exist_ok=True)
         config = results / "learned_benchmark.yaml"
-        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin, args.variant)
+        write_config(config, meshes, args.sizes, args.sigmas, not args.no_thin, args.variant,
+                     args.seed)
         command = [args.lpd, "sweep", str(config), f"--results_dir={results}"]
         if args.threads:
             command.append(f"--threads={args.threads}")
