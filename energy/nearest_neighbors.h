@@ -72,17 +72,7 @@ class NearestNeighbors {
   template <typename Query, typename SquaredRadius, typename Visit>
   void ForEachWithin(int count, int num_threads, const Query& query,
                      const SquaredRadius& squared_radius, const Visit& visit) const {
-    std::optional<CellGrid> grid;
-    if (count > 0) {
-      const int samples = std::min(count, kGridSampleQueries);
-      std::vector<double> radii(samples);
-      for (int s = 0; s < samples; ++s) {
-        radii[s] = squared_radius(static_cast<int>(static_cast<int64_t>(s) * count / samples));
-      }
-      std::nth_element(radii.begin(), radii.begin() + samples / 2, radii.end());
-      const double cell_size = 0.5 * std::sqrt(radii[samples / 2]);
-      if (cell_size > 0.0 && std::isfinite(cell_size)) grid.emplace(adaptor_.points, cell_size);
-    }
+    const std::optional<CellGrid> grid = GridOfHalfTheMedian(count, squared_radius);
 #pragma omp parallel num_threads(num_threads)
     {
       std::vector<std::pair<int, double>> matches;
@@ -105,26 +95,36 @@ class NearestNeighbors {
   }
 
  private:
-  // Cells of half the median distance to the k-th nearest of up to kGridSampleQueries of the
-  // queries, spread over them: a guessed radius (kGuessGrowth over a neighbour's) spans about
-  // five cells. None where that distance is 0 (most points repeated): the tree gathers.
-  template <typename Query>
-  std::optional<CellGrid> GridForSearch(int count, int k, const Query& query) const {
+  // A grid of cells half the median length over up to kGridSampleQueries queries spread over
+  // [0, count), squared_length(q) each length squared; none where that median is 0 or not
+  // finite (then the tree gathers).
+  template <typename SquaredLength>
+  std::optional<CellGrid> GridOfHalfTheMedian(int count,
+                                              const SquaredLength& squared_length) const {
     const int samples = std::min(count, kGridSampleQueries);
-    std::vector<double> kth;
-    std::vector<int> nearest(k);
-    std::vector<double> squared_distances(k);
+    if (samples == 0) return std::nullopt;
+    std::vector<double> squared(samples);
     for (int s = 0; s < samples; ++s) {
-      const Point3 p = query(static_cast<int>(static_cast<int64_t>(s) * count / samples));
-      const int found = static_cast<int>(
-          tree_.knnSearch(p.data(), k, nearest.data(), squared_distances.data()));
-      if (found > 0) kth.push_back(squared_distances[found - 1]);
+      squared[s] = squared_length(static_cast<int>(static_cast<int64_t>(s) * count / samples));
     }
-    if (kth.empty()) return std::nullopt;
-    std::nth_element(kth.begin(), kth.begin() + kth.size() / 2, kth.end());
-    const double cell_size = 0.5 * std::sqrt(kth[kth.size() / 2]);
+    std::nth_element(squared.begin(), squared.begin() + samples / 2, squared.end());
+    const double cell_size = 0.5 * std::sqrt(squared[samples / 2]);
     if (!(cell_size > 0.0) || !std::isfinite(cell_size)) return std::nullopt;
     return CellGrid(adaptor_.points, cell_size);
+  }
+
+  // For the k-nearest search: cells of half the median distance to the k-th nearest (found by
+  // the tree), so that a guessed radius (kGuessGrowth over a neighbour's) spans about five.
+  template <typename Query>
+  std::optional<CellGrid> GridForSearch(int count, int k, const Query& query) const {
+    std::vector<int> nearest(k);
+    std::vector<double> squared_distances(k);
+    return GridOfHalfTheMedian(count, [&](int q) {
+      const Point3 p = query(q);
+      const int found = static_cast<int>(
+          tree_.knnSearch(p.data(), k, nearest.data(), squared_distances.data()));
+      return found > 0 ? squared_distances[found - 1] : 0.0;
+    });
   }
 
   static constexpr int kGridSampleQueries = 32;
