@@ -31,6 +31,18 @@ std::vector<std::pair<double, int>> ByDistance(const PointList& points, const Po
   return all;
 }
 
+// The k nearest of `query` a search found (`found` of them) against brute force: the same
+// indices and the same squared distances, bit for bit.
+void ExpectBruteForceNearest(const PointList& points, const Point3& query, int k,
+                             const int* nearest, const double* squared, int found) {
+  const auto all = ByDistance(points, query);
+  ASSERT_EQ(found, k);
+  for (int b = 0; b < k; ++b) {
+    ASSERT_EQ(nearest[b], all[b].second) << "k " << k << " b " << b;
+    ASSERT_EQ(squared[b], all[b].first);
+  }
+}
+
 TEST(NearestNeighbors, FindsTheKNearestByBruteForce) {
   const PointList points = RandomPoints(2000, 1);
   const PointList queries = RandomPoints(50, 2);
@@ -65,12 +77,8 @@ TEST(NearestNeighbors, FindsTheKNearestFromAGuessedRadiusByBruteForce) {
       search.ForEach(
           static_cast<int>(queries.size()), k, threads, [&](int q) { return queries[q]; },
           [&](int q, const int* nearest, const double* squared, int found) {
-            const auto all = ByDistance(points, queries[q]);
-            ASSERT_EQ(found, k);
-            for (int b = 0; b < k; ++b) {
-              ASSERT_EQ(nearest[b], all[b].second) << "k " << k << " query " << q << " b " << b;
-              ASSERT_EQ(squared[b], all[b].first);
-            }
+            SCOPED_TRACE(testing::Message() << "query " << q);
+            ExpectBruteForceNearest(points, queries[q], k, nearest, squared, found);
 #pragma omp atomic
             ++checked;
           });
@@ -91,12 +99,7 @@ TEST(NearestNeighbors, FindsTheKNearestAmongPointsRepeatedMoreThanKTimes) {
   const int k = NearestNeighbors::kRadiusFirstMinK;
   search.ForEach(static_cast<int>(points.size()), k, 2, [&](int q) { return points[q]; },
                  [&](int q, const int* nearest, const double* squared, int found) {
-                   const auto all = ByDistance(points, points[q]);
-                   ASSERT_EQ(found, k);
-                   for (int b = 0; b < k; ++b) {
-                     ASSERT_EQ(nearest[b], all[b].second);
-                     ASSERT_EQ(squared[b], all[b].first);
-                   }
+                   ExpectBruteForceNearest(points, points[q], k, nearest, squared, found);
                  });
 }
 
