@@ -79,14 +79,25 @@ void CellGrid::Within(const Point3& query, double squared_radius,
   const int y1 = CellAlong(query.y() + radius, origin_.y(), cells_y_);
   const int z0 = CellAlong(query.z() - radius, origin_.z(), cells_z_);
   const int z1 = CellAlong(query.z() + radius, origin_.z(), cells_z_);
+  // The cells x0..x1 of a row are consecutive, and so are their slots [first, last): room
+  // for all of the rows' slots is made at once, then the points within the radius are kept.
+  const auto row_slots = [&](int z, int y) {
+    const int row = (z * cells_y_ + y) * cells_x_;
+    return std::make_pair(first_slot_[row + x0], first_slot_[row + x1 + 1]);
+  };
+  size_t count = out->size();
+  size_t room = count;
   for (int z = z0; z <= z1; ++z) {
     for (int y = y0; y <= y1; ++y) {
-      // The cells x0..x1 of a row are consecutive, and so are their slots.
-      const int row = (z * cells_y_ + y) * cells_x_;
-      const int first = first_slot_[row + x0], last = first_slot_[row + x1 + 1];
-      size_t count = out->size();
-      out->resize(count + (last - first));
-      std::pair<int, double>* appended = out->data();
+      const auto [first, last] = row_slots(z, y);
+      room += last - first;
+    }
+  }
+  out->resize(room);
+  std::pair<int, double>* appended = out->data();
+  for (int z = z0; z <= z1; ++z) {
+    for (int y = y0; y <= y1; ++y) {
+      const auto [first, last] = row_slots(z, y);
       for (int slot = first; slot < last; ++slot) {
         // nanoflann's L2_Simple_Adaptor::evalMetric, term by term.
         double difference = query.x() - x_[slot];
@@ -98,9 +109,9 @@ void CellGrid::Within(const Point3& query, double squared_radius,
         appended[count] = {index_[slot], squared};
         count += squared < squared_radius;  // written always, kept only within the radius
       }
-      out->resize(count);
     }
   }
+  out->resize(count);
 }
 
 }  // namespace lpd::energy
