@@ -32,6 +32,7 @@ class CellGrid {
               std::vector<std::pair<int, double>>* out) const;
 
   double cell_size() const { return cell_size_; }
+  int size() const { return static_cast<int>(index_.size()); }  // the points
 
  private:
   // The cell of coordinate v along an axis of `cells` cells starting at `origin`, clamped to

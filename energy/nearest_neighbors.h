@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "energy/cell_grid.h"
-#include "energy/even_key_sort.h"
+#include "energy/knn_by_radius.h"
 #include "energy/point3.h"
 #include "energy/point_kd_tree.h"
 
@@ -60,7 +60,7 @@ class NearestNeighbors {
       for (int q = 0; q < count; ++q) {
         const Point3 p = query(q);
         const int found = radius_first
-                              ? by_radius.Search(tree_, grid ? &*grid : nullptr, p, k,
+                              ? by_radius.Search(&tree_, grid ? &*grid : nullptr, p, k,
                                                  nearest.data(), squared_distances.data())
                               : static_cast<int>(tree_.knnSearch(p.data(), k, nearest.data(),
                                                                  squared_distances.data()));
@@ -129,84 +129,13 @@ class NearestNeighbors {
     std::vector<double> squared_distances(k);
     KnnByRadius by_radius;
     return GridOfHalfTheMedian(count, [&](int q) {
-      const int found = by_radius.Search(tree_, nullptr, query(q), k, nearest.data(),
+      const int found = by_radius.Search(&tree_, nullptr, query(q), k, nearest.data(),
                                          squared_distances.data());
       return found > 0 ? squared_distances[found - 1] : 0.0;
     }, median_squared);
   }
 
   static constexpr int kGridSampleQueries = 32;
-
-  // One thread's k-nearest search by radius: exact, since the k nearest lie within any
-  // radius that holds k points; a guess that holds fewer falls back to nanoflann's search.
-  // The points within a radius are gathered by `grid` where given, else by the tree: the
-  // same points with the same squared distances (cell_grid.h).
-  class KnnByRadius {
-   public:
-    int Search(const L2PointKdTree& tree, const CellGrid* grid, const Point3& p, int k,
-               int* nearest, double* squared_distances) {
-      tree_ = &tree;
-      grid_ = grid;
-      matches_.clear();
-      if (squared_radius_ > 0.0) Within(p, squared_radius_);
-      if (static_cast<int>(matches_.size()) < k) {
-        // The guess holds fewer than k: nanoflann's search gives the k-th distance, and the
-        // points within it, ties included, are gathered again (all of them if fewer than k).
-        const int found = static_cast<int>(tree.knnSearch(p.data(), k, nearest, squared_distances));
-        matches_.clear();
-        if (found < k) {
-          for (int a = 0; a < found; ++a) matches_.emplace_back(nearest[a], squared_distances[a]);
-        } else {
-          Within(p, std::nextafter(squared_distances[k - 1], HUGE_VAL));
-        }
-      }
-      // The k nearest by (distance, index), whichever search found them: the same order for
-      // any guess, so for any thread count. Sorting all the gathered points (about 1.4 k)
-      // costs less than selecting the k nearest first.
-      const int found = std::min(k, static_cast<int>(matches_.size()));
-      if (found == 0) return 0;
-      auto closer = [](const std::pair<int, double>& a, const std::pair<int, double>& b) {
-        return a.second < b.second || (a.second == b.second && a.first < b.first);
-      };
-      SortByEvenKeys(matches_.data(), matches_.size(),
-                     [](const std::pair<int, double>& m) { return m.second; }, closer);
-      for (int a = 0; a < found; ++a) {
-        nearest[a] = matches_[a].first;
-        squared_distances[a] = matches_[a].second;
-      }
-      if (found == k) {
-        // After a far query (an outlier) the guess grows at most kMaxGuessRise-fold, not to
-        // a radius that would hold much of the cloud.
-        const double next = kGuessGrowth * squared_distances[k - 1];
-        squared_radius_ = squared_radius_ > 0.0 ? std::min(next, kMaxGuessRise * squared_radius_)
-                                                : next;
-      }
-      return found;
-    }
-
-    // The next search's guessed squared radius, grown by kGuessGrowth.
-    void Guess(double squared_radius) { squared_radius_ = kGuessGrowth * squared_radius; }
-
-   private:
-    // The points at squared distances under `squared_radius` from p, in matches_.
-    void Within(const Point3& p, double squared_radius) {
-      if (grid_) {
-        grid_->Within(p, squared_radius, &matches_);
-      } else {
-        tree_->radiusSearch(p.data(), squared_radius, matches_,
-                            nanoflann::SearchParams(32, 0.0f, false));
-      }
-    }
-
-    // The next guess, in squared distance, over this query's k-th: neighbouring queries
-    // (Morton order) differ by a few percent; 1.4 misses on 0.3-3% of them.
-    static constexpr double kGuessGrowth = 1.4;
-    static constexpr double kMaxGuessRise = 4.0;
-    double squared_radius_ = 0.0;
-    std::vector<std::pair<int, double>> matches_;
-    const L2PointKdTree* tree_ = nullptr;
-    const CellGrid* grid_ = nullptr;
-  };
 
   PointListAdaptor adaptor_;
   L2PointKdTree tree_;

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "energy/cell_grid.h"
+#include "energy/knn_by_radius.h"
 #include "energy/nearest_neighbors.h"
 #include "solvers/lloyd_cell.h"
 #include "solvers/median.h"
@@ -14,6 +16,9 @@ namespace {
 constexpr int kNeighbors = 10;  // the neighbours whose bisectors bound a point's cell
 static_assert(kNeighbors <= kMaxCellSites);
 constexpr double kStep = 0.4;   // largest move per round, in units of h
+// The cells of the later rounds' grids over the median distance to the kNeighbors-th
+// neighbour: 0.7 took 20-25% off the stage on the sheets at 50K 1% against the tree, 0.5 10%.
+constexpr double kCellOverFarthest = 0.7;
 // The cell reaches beyond the neighbours' hull by half a row of a hexagonal lattice of the
 // median nearest distance a: its rows lie sqrt(3) / 2 a apart.
 constexpr double kHullMargin = 0.4330127018922193;  // sqrt(3) / 4
@@ -87,15 +92,43 @@ energy::PointList SpreadEvenly(const energy::PointList& points, const energy::Po
   std::vector<double> squared(neighbors.size());
   std::vector<int> found(count);
   std::vector<double> nearest(count);
+  std::vector<double> last_farthest(count);  // a point's last squared distance to its kRow-th
   for (int round = 0; round < rounds; ++round) {
-    const energy::NearestNeighbors search(current);
-    search.ForEach(count, kNeighbors + 1, num_threads, [&current](int r) { return current[r]; },
-                   [&](int r, const int* indices, const double* distances, int num_found) {
-                     std::copy(indices, indices + num_found, &neighbors[r * kRow]);
-                     std::copy(distances, distances + num_found, &squared[r * kRow]);
-                     found[r] = num_found;
-                     nearest[r] = num_found > 1 ? std::sqrt(distances[1]) : 0.0;
-                   });
+    const auto take = [&](int r, const int* indices, const double* distances, int num_found) {
+      std::copy(indices, indices + num_found, &neighbors[r * kRow]);
+      std::copy(distances, distances + num_found, &squared[r * kRow]);
+      found[r] = num_found;
+      nearest[r] = num_found > 1 ? std::sqrt(distances[1]) : 0.0;
+    };
+    // The first round searches a tree. The points then move less than their spacing a round,
+    // so a later round gathers each point's neighbours from a grid within a radius guessed
+    // from its own last (knn_by_radius.h): a grid is cheaper to build than a tree, and the
+    // guess rarely misses.
+    double cell_size = 0.0;
+    if (round > 0) {
+      for (int r = 0; r < count; ++r) last_farthest[r] = squared[r * kRow + found[r] - 1];
+      std::vector<double> farthest = last_farthest;
+      cell_size = kCellOverFarthest * std::sqrt(Median(&farthest));
+    }
+    if (cell_size > 0.0 && std::isfinite(cell_size)) {
+      const energy::CellGrid grid(current, cell_size);
+#pragma omp parallel num_threads(num_threads)
+      {
+        energy::KnnByRadius by_radius;
+        std::array<int, kRow> indices;
+        std::array<double, kRow> distances;
+#pragma omp for schedule(static)
+        for (int r = 0; r < count; ++r) {
+          by_radius.Guess(last_farthest[r]);
+          take(r, indices.data(), distances.data(),
+               by_radius.Search(nullptr, &grid, current[r], kRow, indices.data(),
+                                distances.data()));
+        }
+      }
+    } else {
+      const energy::NearestNeighbors search(current);
+      search.ForEach(count, kRow, num_threads, [&current](int r) { return current[r]; }, take);
+    }
     const double median_nearest = Median(&nearest);
     if (!(h > 0.0)) {
       h = 2.0 * median_nearest;

@@ -1,7 +1,7 @@
 // The k-nearest search of every point of a cloud (the probe's, the k-NN graph's, the final
 // steps'), nanoflann's own search against NearestNeighbors::ForEach, which from
 // kRadiusFirstMinK on selects the k nearest from a guessed radius (docs/performance.md,
-// "Time against the first benchmark's build"). The cloud: a unit sphere of 50,000 points
+// "Time against the first benchmark's build"); and the 1,500 nearest of every 96th point. The cloud: a unit sphere of 50,000 points
 // with Gaussian noise of a third of their spacing, in Morton order as the solver's points.
 #include <random>
 
@@ -61,12 +61,30 @@ void BM_NearestNeighborsForEach(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * points.size());
 }
 
+// The merged sides' regions (solvers/merged_sides.h): the 1,500 nearest of every 96th point.
+// Few queries of many neighbours, where setting up the grid (the k-th distances of 32 sample
+// queries) weighs as much as the queries.
+void BM_NearestNeighborsForEachRegions(benchmark::State& state) {
+  const PointList& points = NoisySphere();
+  constexpr int kRegionPoints = 1500, kStride = 96;
+  const int queries = static_cast<int>(points.size()) / kStride;
+  const NearestNeighbors search(points);
+  for (auto _ : state) {
+    search.ForEach(queries, kRegionPoints, 1, [&](int q) { return points[q * kStride]; },
+                   [](int, const int* nearest, const double*, int) {
+                     benchmark::DoNotOptimize(nearest);
+                   });
+  }
+  state.SetItemsProcessed(state.iterations() * queries);
+}
+
 void NeighborCounts(benchmark::internal::Benchmark* benchmark) {
   for (int k : {20, 32, 48, 64, 131, 261, 400}) benchmark->Arg(k);
 }
 
 BENCHMARK(BM_NanoflannSearch)->Apply(NeighborCounts)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_NearestNeighborsForEach)->Apply(NeighborCounts)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_NearestNeighborsForEachRegions)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace lpd::energy
