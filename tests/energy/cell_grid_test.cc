@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "nanoflann_distance.h"
+
 namespace lpd::energy {
 namespace {
 
@@ -21,11 +23,7 @@ std::vector<std::pair<int, double>> BruteForceWithin(const PointList& points, co
                                                      double squared_radius) {
   std::vector<std::pair<int, double>> within;
   for (size_t i = 0; i < points.size(); ++i) {
-    double squared = 0.0;
-    for (int d = 0; d < 3; ++d) {
-      const double difference = query[d] - points[i][d];
-      squared += difference * difference;
-    }
+    const double squared = NanoflannSquaredDistance(query, points[i]);
     if (squared < squared_radius) within.emplace_back(static_cast<int>(i), squared);
   }
   return within;

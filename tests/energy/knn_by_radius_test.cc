@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "nanoflann_distance.h"
+
 namespace lpd::energy {
 namespace {
 
@@ -20,12 +22,7 @@ std::vector<std::pair<double, int>> BruteForceNearest(const PointList& points,
                                                       const Point3& query, int k) {
   std::vector<std::pair<double, int>> all;
   for (size_t i = 0; i < points.size(); ++i) {
-    double squared = 0.0;
-    for (int d = 0; d < 3; ++d) {
-      const double difference = query[d] - points[i][d];
-      squared += difference * difference;
-    }
-    all.emplace_back(squared, static_cast<int>(i));
+    all.emplace_back(NanoflannSquaredDistance(query, points[i]), static_cast<int>(i));
   }
   std::sort(all.begin(), all.end());
   all.resize(std::min<size_t>(k, all.size()));
