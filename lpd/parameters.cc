@@ -262,7 +262,7 @@ std::vector<Parameter> ProblemAndEnergyParameters() {
           {kStart,
            "zero (Alg. 1: H = T = 0), plane_fit (PCA planes, T = H), random (uniform h_i, as "
            "the reference implementation), input_normals (planes through the points with the "
-           "input's normals), or auto (zero for alternating, plane_fit for ceres)"},
+           "input's normals), or auto (plane_fit; for alternating in the paper preset, zero)"},
           [](const O& o) {
             return o.initialization ? solvers::InitializationName(*o.initialization) : "auto";
           },

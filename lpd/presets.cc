@@ -20,6 +20,9 @@ solvers::DenoiseOptions PresetOptions(Preset preset) {
       SetDenoiseParameter(parameter.name, parameter.paper_value, &options);
     }
   }
+  // Alg. 1 from H = T = 0 as published; not a paper value of `initialization`, which would
+  // also apply to the joint solve, which cannot start there.
+  options.alternating_start = solvers::Initialization::kZero;
   return options;
 }
 

@@ -8,9 +8,9 @@
 //             across scales and noise levels. These are the defaults of DenoiseOptions.
 //   kPaper    the paper's literal setting (Table 2, Alg. 1, Sec. 3.4), for reproduction:
 //             the default with every parameter's paper value (lpd/parameters.cc) applied:
-//             k = 20, lambda = 1, eta = 5000, mu_l = 5e-9, mu_m = 0.13, 5 outer iterations
-//             of 2 inner passes, stop at a 1% energy change over three iterations,
-//             projection onto t_i.
+//             k = 20, lambda = 1, eta = 5000, mu_l = 5e-9, mu_m = 0.13, Alg. 1 from
+//             H = T = 0, 5 outer iterations of 2 inner passes, stop at a 1% energy change
+//             over three iterations, projection onto t_i.
 #ifndef LPD_PRESETS_H_
 #define LPD_PRESETS_H_
 

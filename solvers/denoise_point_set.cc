@@ -170,7 +170,7 @@ bool ParseSolver(const std::string& name, Solver* solver) {
 
 Initialization DenoiseOptions::EffectiveInitialization() const {
   if (initialization) return *initialization;
-  return solver == Solver::kCeres ? Initialization::kPlaneFit : Initialization::kZero;
+  return solver == Solver::kCeres ? Initialization::kPlaneFit : alternating_start;
 }
 
 NeighborhoodSizeOptions DenoiseOptions::ProbeOptions() const {

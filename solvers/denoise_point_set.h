@@ -50,9 +50,14 @@ struct DenoiseOptions {
   energy::DataScaledWeights weights;
   Solver solver = Solver::kAlternating;
   CeresJointSolver::Options joint;           // used when solver == kCeres
-  // The start of the minimization; unset means kZero for Alg. 1 (as the paper does) and
-  // kPlaneFit for the joint solve (which needs every h_i on the unit sphere).
+  // The start of the minimization; unset means `alternating_start` for Alg. 1 and kPlaneFit
+  // for the joint solve (which needs every h_i on the unit sphere).
   std::optional<Initialization> initialization;
+  // Alg. 1's start where `initialization` is unset: kPlaneFit, the PCA planes with T = H and
+  // S oriented by them, so that the first T solve does not average planes of opposite
+  // orientation (docs/method.md, "The start"); the paper preset's kZero is Alg. 1 as
+  // published (H = T = 0, S = 1).
+  Initialization alternating_start = Initialization::kPlaneFit;
   int initialization_seed = 1;               // of initialization random
   FinalDenoisingOptions final_step;          // indicators and outlier removal
   // Stray points far from the whole cloud, set aside before the first stage (DenoisePointSet).

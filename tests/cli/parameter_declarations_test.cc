@@ -82,6 +82,15 @@ TEST(ParameterDeclarations, ThePaperPresetIsTheDefaultWithTheDeclaredPaperValues
   EXPECT_EQ(paper.settings.energy.mu_l, 5e-9);
   EXPECT_EQ(paper.settings.energy.mu_m, 0.13);
   EXPECT_EQ(paper.minimizer.max_iterations, 5);
+  // Alg. 1 from H = T = 0 as published, where the default starts from oriented PCA planes;
+  // the joint solve starts from those planes in both.
+  EXPECT_EQ(paper.EffectiveInitialization(), solvers::Initialization::kZero);
+  EXPECT_EQ(defaults.EffectiveInitialization(), solvers::Initialization::kPlaneFit);
+  solvers::DenoiseOptions paper_ceres = paper;
+  paper_ceres.solver = solvers::Solver::kCeres;
+  EXPECT_EQ(paper_ceres.EffectiveInitialization(), solvers::Initialization::kPlaneFit);
+  std::string error;
+  EXPECT_TRUE(paper_ceres.IsValid(&error)) << error;
 }
 
 // Texts of the same value: equal numbers ("4.4" and "4.400000"), or equal words.
