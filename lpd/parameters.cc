@@ -291,7 +291,7 @@ std::vector<Parameter> AlternatingParameters() {
   return {
       Integer("max_iters", kAlternating,
               {kSchedule,
-               "maximum outer iterations (the default converges after 20-60)", "", "5"},
+               "maximum outer iterations (the default converges after 7-30)", "", "5"},
               [](O& o) -> int& { return o.minimizer.max_iterations; }),
       Integer("inner_iters", kAlternating,
               {kSchedule, "(T, M, S) passes per outer iteration", "", "2"},
