@@ -24,7 +24,8 @@ constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
 // 6: the motion test (motion_tolerance) and what it reads: the noise deviation and each
 // iteration's motion. An older state resumes with the test off, as it would have run then.
 // 7: the number of each N(i)'s nearest that M's pairs come from (NeighborGraph::pair_k).
-// An older state's M came from all k, and so does its resumed M.
+// An older state's M came from all k, and so does its resumed M; its saved smoothing balance
+// is the one it ran with (then scaled where k widened).
 constexpr uint32_t kVersion = 7;
 constexpr uint32_t kOldestVersion = 3;
 constexpr uint32_t kByteOrderMark = 0x01020304u;
@@ -155,14 +156,10 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   for (const std::string& name : DenoiseParameterNames()) {
     if (DenoiseParameterApplies(name, options.solver)) names.push_back(name);
   }
-  // The balance the run used: a resumed state keeps no neighbourhood estimates to scale it by
-  // (NeighborhoodSize::smoothing_scale).
-  solvers::DenoiseOptions used = options;
-  used.weights.smoothing_balance *= state.neighborhood.smoothing_scale;
   out.Value(static_cast<uint32_t>(names.size()));
   for (const std::string& name : names) {
     out.Text(name);
-    out.Text(GetDenoiseParameter(name, used));
+    out.Text(GetDenoiseParameter(name, options));
   }
   out.Array(problem.frame.center.data(), 3);
   out.Value(problem.frame.scale);

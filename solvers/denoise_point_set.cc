@@ -258,10 +258,8 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   StageClock clock(&state->stage_times);
   SolverSettings settings = options.settings;
-  energy::DataScaledWeights weights = options.weights;
-  weights.smoothing_balance *= state->neighborhood.smoothing_scale;
   settings.energy =
-      energy::ScaleWeightsToData(state->problem, options.settings.energy, weights,
+      energy::ScaleWeightsToData(state->problem, options.settings.energy, options.weights,
                                  options.settings.num_threads);
   SolverSummary summary;
   if (options.solver == Solver::kCeres) {

@@ -281,9 +281,8 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
           ? NoiseFromResiduals(std::move(side_residuals), k, floor)
           : NoiseEstimate(size.read_sigma, size.spacing, size.thin_candidate_fraction);
   // Past the calibrated range the probe reads the noise ever lower (WideNoiseFactor).
-  const double widening =
-      options.wide_noise ? WideNoiseFactor(size.read_sigma / size.spacing) : 1.0;
-  size.radius_in_sigmas = options.radius_in_sigmas * widening;
+  size.radius_in_sigmas = options.radius_in_sigmas;
+  if (options.wide_noise) size.radius_in_sigmas *= WideNoiseFactor(size.read_sigma / size.spacing);
   const int largest = std::min<int>(options.max_k, n - 1);
   const auto k_at = [&](double radius_in_sigmas) {
     const double radius_in_spacings = radius_in_sigmas * size.read_sigma / size.spacing;
@@ -292,10 +291,7 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
         std::clamp(chosen, double(options.min_k), double(std::max(options.min_k, largest)))));
   };
   size.k = k_at(size.radius_in_sigmas);
-  const double plane_weight = PlaneReadingWeight(size.thin_candidate_fraction);
-  size.pair_k = k_at(options.radius_in_sigmas * (1.0 + plane_weight * (widening - 1.0)));
-  size.smoothing_scale =
-      1.0 + plane_weight * (double(k_at(options.radius_in_sigmas)) / size.k - 1.0);
+  size.pair_k = std::min(size.k, k_at(options.radius_in_sigmas));
   return size;
 }
 
