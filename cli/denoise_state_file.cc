@@ -23,10 +23,7 @@ constexpr char kEndMark[8] = {'L', 'P', 'D', 'S', 'E', 'N', 'D', '\n'};
 // rather than resumed from; versions 3 and 4 have none.
 // 6: the motion test (motion_tolerance) and what it reads: the noise deviation and each
 // iteration's motion. An older state resumes with the test off, as it would have run then.
-// 7: the number of each N(i)'s nearest that M's pairs come from (NeighborGraph::pair_k).
-// An older state's M came from all k, and so does its resumed M; its saved smoothing balance
-// is the one it ran with (then scaled where k widened).
-constexpr uint32_t kVersion = 7;
+constexpr uint32_t kVersion = 6;
 constexpr uint32_t kOldestVersion = 3;
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 
@@ -156,10 +153,14 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   for (const std::string& name : DenoiseParameterNames()) {
     if (DenoiseParameterApplies(name, options.solver)) names.push_back(name);
   }
+  // The balance the run used: a resumed state keeps no neighbourhood estimates to scale it by
+  // (NeighborhoodSize::smoothing_scale).
+  solvers::DenoiseOptions used = options;
+  used.weights.smoothing_balance *= state.neighborhood.smoothing_scale;
   out.Value(static_cast<uint32_t>(names.size()));
   for (const std::string& name : names) {
     out.Text(name);
-    out.Text(GetDenoiseParameter(name, options));
+    out.Text(GetDenoiseParameter(name, used));
   }
   out.Array(problem.frame.center.data(), 3);
   out.Value(problem.frame.scale);
@@ -168,7 +169,6 @@ void WriteDenoiseState(const std::string& path, const solvers::DenoiseState& sta
   const int32_t k = problem.k();
   out.Value(n);
   out.Value(k);
-  out.Value(static_cast<int32_t>(problem.graph.PairNeighbors()));
   out.Array(state.order.data(), state.order.size());
   for (const energy::Point3& p : problem.points) out.Array(p.data(), 3);
   out.Value(static_cast<int32_t>(state.left_out.size()));
@@ -236,8 +236,6 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
   const int32_t n = in.Value<int32_t>();
   const int32_t k = in.Value<int32_t>();
   if (n < 2 || k < 1 || k >= n) in.Fail("corrupt state file (point count or k)");
-  const int32_t pair_k = version >= 7 ? in.Value<int32_t>() : k;
-  if (pair_k < 1 || pair_k > k) in.Fail("corrupt state file (pair_k)");
   in.Vector(n, &state.order);
   problem.points = ReadPoints(n, &in);
   for (const energy::Point3& p : problem.points) {
@@ -261,7 +259,6 @@ SavedDenoiseRun ReadDenoiseState(const std::string& path) {
     }
   }
   problem.graph.k = k;
-  problem.graph.pair_k = pair_k;
   in.Vector(static_cast<uint64_t>(n) * k, &problem.graph.neighbors);
   for (int j : problem.graph.neighbors) {
     if (j < 0 || j >= n) in.Fail("corrupt state file (neighbour index)");

@@ -33,7 +33,7 @@ std::vector<std::pair<std::string, std::string>> Derived(const solvers::DenoiseO
           {"read_sigma", JsonNumber(result.neighborhood.read_sigma)},
           {"spacing", JsonNumber(result.neighborhood.spacing)},
           {"k_radius_sigmas", JsonNumber(result.neighborhood.radius_in_sigmas)},
-          {"pair_k", Integer(result.neighborhood.pair_k)},
+          {"smoothing_scale", JsonNumber(result.neighborhood.smoothing_scale)},
           {"two_sheet_fraction", JsonNumber(result.neighborhood.two_sheet_fraction)},
           {"thin_candidate_fraction", JsonNumber(result.neighborhood.thin_candidate_fraction)},
           {"eta", JsonNumber(result.summary.eta)},

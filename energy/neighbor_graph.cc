@@ -46,13 +46,8 @@ void OwnSideNearest(const PointList& points, int i, const SheetSplit& split,
 
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
                                  bool split_sheets, const SplitSearch* searched_before,
-                                 ThinRegionGrowth growth, SplitNeighborhood judged_on,
-                                 int pair_k) {
+                                 ThinRegionGrowth growth, SplitNeighborhood judged_on) {
   if (k < 1) throw std::invalid_argument("k must be at least 1, got " + std::to_string(k));
-  if (pair_k < 0 || pair_k > k) {
-    throw std::invalid_argument("pair_k must be in [0, k = " + std::to_string(k) + "], got " +
-                                std::to_string(pair_k));
-  }
   const int n = static_cast<int>(points.size());
   if (n < k + 1) {
     throw std::invalid_argument("need at least k+1 = " + std::to_string(k + 1) +
@@ -61,7 +56,6 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
   }
   NeighborGraph graph;
   graph.k = k;
-  graph.pair_k = pair_k;
   graph.neighbors.resize(static_cast<size_t>(n) * k);
   // A thin point's own side is taken from its 2k + 1 nearest: from the search its split is
   // judged on where that holds them, else from a second search over the thin points only.
@@ -167,7 +161,7 @@ NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads
 
 void BuildPairs(NeighborGraph* graph, int num_threads) {
   const int n = graph->num_points();
-  const int k = graph->PairNeighbors();
+  const int k = graph->k;
   // The pairs {i, j} in increasing (min, max) order, each once: the larger indices are
   // bucketed by the smaller one, and each bucket is sorted on its own (so the order in which
   // the threads fill a bucket does not matter).

@@ -1,10 +1,9 @@
 // lpd: the k-nearest-neighbour sets N(i) and the symmetric pair set M of Sec. 3.1.
 //
 // N(i) holds the k nearest samples of point i, excluding i itself (Euclidean distance, ties
-// broken by the k-d tree). M holds every unordered pair {i, j} with i among the pair_k
-// nearest of N(j) or j among those of N(i) (pair_k = k in the paper) exactly once, stored as
-// (i, j) with i < j; the smoothness term of Eq. (5) uses that order: || t_i - s_ij t_j ||^2.
-// Everything is kept in flat arrays built once.
+// broken by the k-d tree). M holds every unordered pair {i, j} with i in N(j) or j in N(i)
+// exactly once, stored as (i, j) with i < j; the smoothness term of Eq. (5) uses that order:
+// || t_i - s_ij t_j ||^2. Everything is kept in flat arrays built once.
 #ifndef LPD_ENERGY_NEIGHBOR_GRAPH_H_
 #define LPD_ENERGY_NEIGHBOR_GRAPH_H_
 
@@ -20,8 +19,6 @@ namespace lpd::energy {
 
 struct NeighborGraph {
   int k = 0;
-  // M's pairs come from the first pair_k of each N(i); 0 means all k.
-  int pair_k = 0;
   // N(i) = neighbors[i * k, (i + 1) * k), sorted by increasing distance.
   LargeVector<int> neighbors;
   // M: pairs[p] = {i, j}, i < j, sorted lexicographically.
@@ -33,7 +30,6 @@ struct NeighborGraph {
 
   int num_points() const { return k > 0 ? static_cast<int>(neighbors.size()) / k : 0; }
   int num_pairs() const { return static_cast<int>(pairs.size()); }
-  int PairNeighbors() const { return pair_k > 0 ? pair_k : k; }
   const int* NeighborsOf(int i) const { return neighbors.data() + static_cast<size_t>(i) * k; }
   // The data point of column `column` of N(i) u {i}: i itself for column 0, else the
   // (column - 1)-th neighbour (the layout of the fitting line processes L, see Variables).
@@ -60,18 +56,14 @@ enum class SplitNeighborhood { kCandidates, kSplitPoints };
 // `searched`, when given, must come from a search over these same points; where it searched
 // as many points as the split needs, the graph takes its lists instead of searching again,
 // and its splits where they were made over as many points (same result).
-// M is built from the first `pair_k` of each N(i) (all k when 0).
-// Requires points.size() >= k + 1, k >= 1 and 0 <= pair_k <= k; throws std::invalid_argument
-// otherwise.
+// Requires points.size() >= k + 1 and k >= 1; throws std::invalid_argument otherwise.
 NeighborGraph BuildNeighborGraph(const PointList& points, int k, int num_threads,
                                  bool split_sheets = false,
                                  const SplitSearch* searched = nullptr,
                                  ThinRegionGrowth growth = ThinRegionGrowth::kWhereCommon,
-                                 SplitNeighborhood judged_on = SplitNeighborhood::kCandidates,
-                                 int pair_k = 0);
+                                 SplitNeighborhood judged_on = SplitNeighborhood::kCandidates);
 
-// Builds M and the incidence lists from already filled `graph.k`, `graph.pair_k` and
-// `graph.neighbors`.
+// Builds M and the incidence lists from already filled `graph.k` and `graph.neighbors`.
 void BuildPairs(NeighborGraph* graph, int num_threads = 1);
 
 }  // namespace lpd::energy

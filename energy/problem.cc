@@ -14,11 +14,6 @@ bool ProblemOptions::IsValid(std::string* error) const {
     *error = "k must be >= 1, got " + std::to_string(k);
     return false;
   }
-  if (pair_k < 0 || pair_k > k) {
-    *error = "pair_k must be in [0, k], got " + std::to_string(pair_k) + " for k = " +
-             std::to_string(k);
-    return false;
-  }
   if (!(min_squared_distance_ratio > 0.0)) {
     *error = "min_squared_distance_ratio must be > 0, got " +
              std::to_string(min_squared_distance_ratio);
@@ -101,8 +96,7 @@ Problem BuildProblem(const PointList& input_points, const ProblemOptions& option
   for (const Point3& x : input_points) problem.points.push_back(problem.frame.ToNormalized(x));
   problem.graph = BuildNeighborGraph(problem.points, options.k, num_threads,
                                      options.split_sheets, searched,
-                                     options.thin_region_growth, options.split_neighborhood,
-                                     options.pair_k);
+                                     options.thin_region_growth, options.split_neighborhood);
   ComputeWeights(options.min_squared_distance_ratio, &problem, num_threads);
   return problem;
 }

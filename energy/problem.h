@@ -21,8 +21,6 @@ namespace lpd::energy {
 struct ProblemOptions {
   // k = |N(i)|, the number of nearest neighbours (paper: 20, 50..150 for heavy noise).
   int k = 20;
-  // M from the pair_k nearest of each N(i) (NeighborGraph); 0 means all k (the paper's M).
-  int pair_k = 0;
   // Floor of |p_i - p_j|^2 and alpha_i, as a fraction of mean_i alpha_i (duplicate guard):
   // pairs closer than 1% of the RMS neighbour distance count as that far apart.
   double min_squared_distance_ratio = 1e-4;

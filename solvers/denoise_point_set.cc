@@ -217,7 +217,6 @@ DenoiseState StartDenoising(const energy::PointList& points, const DenoiseOption
     Thinning thinning = ChooseThinning(ordered_points, options.ProbeOptions(), threads);
     state.neighborhood = thinning.size;
     problem_options.k = state.neighborhood.k;
-    problem_options.pair_k = state.neighborhood.pair_k;
     // Thin regions grow wherever found where the noise is as wide as the spacing
     // (energy/sheet_split.h).
     if (state.neighborhood.read_sigma >= state.neighborhood.spacing) {
@@ -258,8 +257,10 @@ SolverSummary MinimizeFromState(const DenoiseOptions& options, DenoiseState* sta
   if (!options.IsValid(&error)) throw std::invalid_argument(error);
   StageClock clock(&state->stage_times);
   SolverSettings settings = options.settings;
+  energy::DataScaledWeights weights = options.weights;
+  weights.smoothing_balance *= state->neighborhood.smoothing_scale;
   settings.energy =
-      energy::ScaleWeightsToData(state->problem, options.settings.energy, options.weights,
+      energy::ScaleWeightsToData(state->problem, options.settings.energy, weights,
                                  options.settings.num_threads);
   SolverSummary summary;
   if (options.solver == Solver::kCeres) {
@@ -294,9 +295,7 @@ DenoiseResult FinishDenoising(const DenoiseState& state, const DenoiseOptions& o
   result.summary = std::move(summary);
   result.setup_seconds = state.setup_seconds;
   result.neighborhood = state.neighborhood;
-  // Also for a resumed state, which keeps no estimates.
-  result.neighborhood.k = problem.k();
-  result.neighborhood.pair_k = problem.graph.PairNeighbors();
+  result.neighborhood.k = problem.k();  // also for a resumed state, which keeps no estimates
   result.solved_points = problem.num_points();
   result.subsampled = !state.left_out.empty();
   result.pass_summaries = {{static_cast<int>(state.order.size() + state.left_out.size()),

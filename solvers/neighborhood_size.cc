@@ -291,7 +291,9 @@ NeighborhoodSize ChooseNeighborhoodSize(const energy::PointList& points,
         std::clamp(chosen, double(options.min_k), double(std::max(options.min_k, largest)))));
   };
   size.k = k_at(size.radius_in_sigmas);
-  size.pair_k = std::min(size.k, k_at(options.radius_in_sigmas));
+  size.smoothing_scale =
+      1.0 + PlaneReadingWeight(size.thin_candidate_fraction) *
+                (double(k_at(options.radius_in_sigmas)) / size.k - 1.0);
   return size;
 }
 

@@ -31,9 +31,9 @@
 // that nearly split (the share passing kThinRegionGrowthSeparation, sheet_split.h: 1-6% of
 // the probes on the benchmark's meshes at 50,000 points, 6-14% on plates, sheets, thin
 // cylinders and thin-walled boxes whose sides are 1.4-2.8 deviations apart). k widens on
-// every cloud, for the fits; the smoothness term's pairs stay those of radius c (pair_k
-// below; docs/method.md, "Pairs of radius c"). Sides too close to split read as that one
-// sheet: there k keeps the spread
+// every cloud, but only where the plane's readings hold, on few such regions, is the
+// smoothing scaled back with it (smoothing_scale below; docs/method.md, "The fade moved to
+// the smoothing"). Sides too close to split read as that one sheet: there k keeps the spread
 // the probe reads (read_sigma) and noise_sigma is each side's noise, from the offsets'
 // moments over regions of 1,500 probed points (merged_sides.h; docs/method.md, "Thin parts").
 #ifndef LPD_SOLVERS_NEIGHBORHOOD_SIZE_H_
@@ -112,14 +112,16 @@ struct NeighborhoodSize {
   double spacing = 0.0;  // likewise
   double radius_in_sigmas = 0.0;  // the radius k was chosen for: c, or c x WideNoiseFactor
   int k = 0;
-  // The k that radius c gives, k before WideNoiseFactor widened it: the pairs M of the
-  // smoothness term come from each N(i)'s pair_k nearest (energy/neighbor_graph.h). The
-  // widening is for the fits, whose noise the probe under-reads; the smoothing balance B
-  // (energy/data_scaled_weights.h) is a squared radius in neighbour hops, and over the hops
-  // of radius c it reaches as far as the balance was set for (with B = 4 over the widened
-  // hops, JOINT 0.03's curved parts flatten as the iterations go on past the stop), while
-  // the global step solves over fewer pairs (docs/method.md, "Pairs of radius c").
-  int pair_k = 0;
+  // The k that radius c gives over k, its shortfall from 1 weighted by PlaneReadingWeight:
+  // below 1 where WideNoiseFactor widened k on a cloud of few thin parts. The smoothing
+  // balance (energy/data_scaled_weights.h), a squared radius in neighbour hops, is scaled by
+  // it, so that the smoothing reaches as far as the hops of radius c took it: with B at 4 over
+  // the widened hops, curved parts flatten as the iterations go on past the stop (JOINT 0.03:
+  // 2.6% farther from the mesh after 100 iterations; docs/method.md, "Smoothing over widened
+  // neighbourhoods"). Thin parts' merged sides keep the full balance: the merged sides' step
+  // reads them off a smoother mid-surface (docs/method.md, "The fade moved to the smoothing").
+  // 1 for a resumed state, whose saved balance is already scaled.
+  double smoothing_scale = 1.0;
   double two_sheet_fraction = 0.0;  // of the probe neighbourhoods (energy/sheet_split.h)
   // Of the probe neighbourhoods, those whose region passes the growth bar
   // (kThinRegionGrowthSeparation): sides too close to split, read as one sheet.

@@ -109,12 +109,11 @@ TEST(DenoiseStateFile, ResumedRunIsTheUninterruptedRunBitForBit) {
                                         solvers::Initialization::kZero);
 }
 
-// Noise wider than the spacing widens k, and M's pairs keep to the narrower k of radius c
-// (NeighborhoodSize::pair_k): the resumed M must be the one the run solved over.
-TEST(DenoiseStateFile, ResumesWithThePairsOfWidenedNeighbourhoods) {
+// Noise wider than the spacing widens k, and the smoothing balance is scaled back
+// (NeighborhoodSize::smoothing_scale): the saved balance must be the scaled one.
+TEST(DenoiseStateFile, ResumesWithTheSmoothingBalanceScaledForWidenedNeighbourhoods) {
   const energy::PointList points = testing::NoisySphere(3000, 0.2, 12);
-  const solvers::DenoiseState state = solvers::StartDenoising(points, RunOptions(1));
-  EXPECT_LT(state.problem.graph.PairNeighbors(), state.problem.k());
+  EXPECT_LT(solvers::StartDenoising(points, RunOptions(1)).neighborhood.smoothing_scale, 1.0);
   ExpectResumedRunIsTheUninterruptedRun(points, solvers::Initialization::kPlaneFit);
 }
 
@@ -154,23 +153,10 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
   const int32_t threads = 100000;
   write_at(16, &threads, sizeof(threads));
   expect_rejected("thread count 100000");
-  // pair_k follows k: the header (magic, version, byte-order mark, threads), the parameters
-  // (each a length and its text, for name and value), the frame, the duplicate guard, n, k.
-  std::remove(path.c_str());
-  WriteDenoiseState(path, state, options, false);
-  size_t pair_k_offset = 20 + sizeof(uint32_t);
-  for (const auto& [name, value] : ReadDenoiseState(path).parameters) {
-    pair_k_offset += 2 * sizeof(uint32_t) + name.size() + value.size();
-  }
-  pair_k_offset += 5 * sizeof(double) + 2 * sizeof(int32_t);
-  const int32_t too_many_pairs = state.problem.k() + 1;
-  write_at(static_cast<std::streamoff>(pair_k_offset), &too_many_pairs, sizeof(int32_t));
-  expect_rejected("pair_k");
-  // Versions 3 and 4 have no checksum, versions 3-5 no motion test and versions 3-6 no
-  // pair_k: before the end mark a version-6 state keeps the noise deviation, the motions'
-  // count and the motions. A version-3 state (from before the progress test) resumes with
-  // that test off, states older than 6 with the motion test off and older than 7 with M from
-  // all k; versions outside 3-7 are refused.
+  // Versions 3 and 4 have no checksum, and versions 3-5 no motion test: before the end mark
+  // a version-6 state keeps the noise deviation, the motions' count and the motions. A
+  // version-3 state (from before the progress test) resumes with that test off, and states
+  // older than 6 with the motion test off; versions outside 3-6 are refused.
   std::remove(path.c_str());
   WriteDenoiseState(path, state, options, false);
   {
@@ -180,7 +166,6 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
     const size_t end_mark = size - 2 * sizeof(uint64_t);
     const size_t motion_fields = sizeof(double) + sizeof(uint32_t) + motions * sizeof(double);
     bytes.erase(end_mark - motion_fields, motion_fields);
-    bytes.erase(pair_k_offset, sizeof(int32_t));
     bytes.resize(bytes.size() - sizeof(uint64_t));  // the checksum
     std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), bytes.size());
   }
@@ -194,8 +179,8 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
     SetDenoiseParameter(old.parameters.front().first, old.parameters.front().second, &resumed);
     EXPECT_EQ(resumed.minimizer.progress_tolerance, 0.0);
   }
-  set_version(8);
-  expect_rejected("state file version 8");
+  set_version(7);
+  expect_rejected("state file version 7");
   set_version(4);
   {
     const SavedDenoiseRun old = ReadDenoiseState(path);
@@ -206,7 +191,6 @@ TEST(DenoiseStateFile, RejectsBrokenFilesAndKeepsExistingOnes) {
     EXPECT_TRUE(std::isnan(old.state.progress.noise_sigma));
     EXPECT_EQ(old.state.progress.motion_history.size(),
               old.state.progress.energy_history.size());
-    EXPECT_EQ(old.state.problem.graph.PairNeighbors(), old.state.problem.k());
   }
   std::filesystem::resize_file(path, size / 2);
   expect_rejected("truncated");

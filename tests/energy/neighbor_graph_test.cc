@@ -76,41 +76,6 @@ TEST(NeighborGraph, PairsAreTheSymmetricClosureOnce) {
   EXPECT_EQ(two_threads.incident_pairs, graph.incident_pairs);
 }
 
-// With pair_k < k, N(i) keeps its k nearest while M is the symmetric closure of each point's
-// pair_k nearest, found here by sorting all distances.
-TEST(NeighborGraph, PairsFromTheNearestPairKOfEachNeighbourhood) {
-  const int n = 250, k = 12, pair_k = 5;
-  const PointList points = testing::NoisySphere(n, 0.05, 8);
-  const NeighborGraph graph = BuildNeighborGraph(points, k, 2, false, nullptr,
-                                                 ThinRegionGrowth::kWhereCommon,
-                                                 SplitNeighborhood::kCandidates, pair_k);
-  EXPECT_EQ(graph.k, k);
-  EXPECT_EQ(graph.PairNeighbors(), pair_k);
-  std::set<std::pair<int, int>> expected;
-  for (int i = 0; i < n; ++i) {
-    std::vector<std::pair<double, int>> by_distance;
-    for (int j = 0; j < n; ++j) {
-      if (j != i) by_distance.emplace_back((points[i] - points[j]).squaredNorm(), j);
-    }
-    std::sort(by_distance.begin(), by_distance.end());
-    for (int a = 0; a < pair_k; ++a) {
-      const int j = by_distance[a].second;
-      expected.insert({std::min(i, j), std::max(i, j)});
-    }
-    EXPECT_EQ(graph.NeighborsOf(i)[k - 1], by_distance[k - 1].second);
-  }
-  std::set<std::pair<int, int>> got;
-  for (const auto& pair : graph.pairs) got.insert({pair[0], pair[1]});
-  EXPECT_EQ(got.size(), graph.pairs.size());
-  EXPECT_EQ(got, expected);
-  EXPECT_LT(graph.num_pairs(), BuildNeighborGraph(points, k, 2).num_pairs());
-  for (int bad : {-1, k + 1}) {
-    EXPECT_THROW(BuildNeighborGraph(points, k, 1, false, nullptr, ThinRegionGrowth::kWhereCommon,
-                                    SplitNeighborhood::kCandidates, bad),
-                 std::invalid_argument);
-  }
-}
-
 TEST(NeighborGraph, ThreadsBuildTheSameListsOnALargerCloud) {
   // Large enough that the threads fill the lists at the same time (in unsorted point order,
   // so that every point's pairs come from both threads' rows).

@@ -62,7 +62,7 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
     // The estimate takes the plane's reading back out: the true sigma, within the same 5%.
     EXPECT_NEAR(size.noise_sigma / true_sigma, 1.0, 0.05) << "sigma " << sigma;
     // Past kCalibratedReadRatio c widens by the plane's further fall; sheets far apart: few
-    // regions nearly split.
+    // regions nearly split, so the smoothing follows the widening back in full (below).
     EXPECT_LT(size.thin_candidate_fraction, kThinShareForPlaneReadings) << "sigma " << sigma;
     const double factor = read_ratio > kCalibratedReadRatio
                               ? PlaneReadFraction(kCalibratedReadRatio) /
@@ -73,11 +73,11 @@ TEST(NeighborhoodSize, PlaneReadingsMatchAFreshMeasurement) {
     plain.wide_noise = false;
     const NeighborhoodSize unwidened = ChooseNeighborhoodSize(noisy, plain, 2);
     EXPECT_EQ(unwidened.radius_in_sigmas, options.radius_in_sigmas);
-    EXPECT_EQ(unwidened.pair_k, unwidened.k);
-    // The pairs keep to radius c: the k the unwidened choice makes.
-    EXPECT_EQ(size.pair_k, unwidened.k) << "sigma " << sigma;
+    EXPECT_EQ(unwidened.smoothing_scale, 1.0);
+    // The smoothing balance follows the widening back: the k of radius c over the k chosen.
+    EXPECT_DOUBLE_EQ(size.smoothing_scale, double(unwidened.k) / size.k) << "sigma " << sigma;
     if (factor > 1.0) {
-      EXPECT_LT(size.pair_k, size.k) << "sigma " << sigma;
+      EXPECT_LT(size.smoothing_scale, 1.0) << "sigma " << sigma;
     }
   }
 }
@@ -136,7 +136,7 @@ TEST(NeighborhoodSize, AThinPlateReadAsWideNoiseWidensWithTheFullSmoothing) {
                    options.radius_in_sigmas * PlaneReadFraction(kCalibratedReadRatio) /
                        PlaneReadFraction(read_ratio));
   EXPECT_GT(size.radius_in_sigmas, options.radius_in_sigmas);
-  EXPECT_LT(size.pair_k, size.k);
+  EXPECT_EQ(size.smoothing_scale, 1.0);
 }
 
 TEST(NeighborhoodSize, StaysWithinItsBoundsAndRefusesTooFewPoints) {
