@@ -41,6 +41,7 @@ SolverSettings Fixed(const energy::EnergyParameters& parameters) {
 AlternatingMinimizer::Options TightOptions() {
   AlternatingMinimizer::Options options;
   options.max_iterations = 6;
+  options.inner_iterations = 2;  // Alg. 1's schedule: H, L, then (T, M, S) twice
   options.energy_tolerance = 0.0;
   options.progress_tolerance = 0.0;
   options.motion_tolerance = 0.0;
