@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the FANDISK comparison with the public reference implementation: mean exact
 # distance from the output points to the clean mesh over its bounding-box diagonal, for
-# k = 20 and 50, with lpd's default schedule (5 outer x 2 inner) and the reference's
+# k = 20 and 50, with the paper preset's schedule (5 outer x 2 inner) and the reference's
 # (5 outer x 5 inner). Usage: scripts/fandisk_reference_table.sh [LPD_DATA]   (~1 min)
 set -euo pipefail
 cd "$(dirname "$0")/.."
